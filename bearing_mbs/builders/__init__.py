@@ -1,0 +1,15 @@
+"""Spec → scene builders. Each includes only what its case needs."""
+
+from ..spec import Spec
+from ..scene import Scene
+from .balls import build_balls_scene
+
+BUILDERS = {"balls": build_balls_scene}
+
+
+def build_scene(spec: Spec) -> Scene:
+    """The scene of a validated spec, for its model."""
+    return BUILDERS[spec.scenario.model](spec)
+
+
+__all__ = ["BUILDERS", "build_scene"]

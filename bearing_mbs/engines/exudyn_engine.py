@@ -1,0 +1,240 @@
+"""The Exudyn engine: a scene as Exudyn planar rigid bodies, run by an Exudyn solver.
+
+* bodies: ``NodeRigidBody2D`` + ``ObjectRigidBody2D``; a fixed coordinate is a ground
+  ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
+* gravity: ``LoadMassProportional`` per body, only when gravity is non-zero;
+* contacts, loads and drives: see :mod:`.exudyn_connectors`;
+* distance constraints: ``ObjectConnectorDistance`` (implicit solvers only: Exudyn's explicit solvers
+  reject joints, EXUDYN_NOTES.md §1);
+* per-pair state (latched approach speeds), events, output and run guards: a ``PostStepUserFunction``,
+  once per accepted step, calling the same compiled :func:`bearing_mbs.contact.state.advance_pair_state`
+  as the reference engine.
+
+Exudyn's console output is captured into ``result.metadata["exudyn_log"]``.
+"""
+
+from __future__ import annotations
+
+import math
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..contact.kernel import N_PAIR_OUTPUTS, scene_forces
+from ..contact.state import advance_pair_state, new_events, penetration_bounds
+from ..progress import ProgressMeter
+from ..result import FAILED, SUCCESS, Result, Stats
+from ..scene import Scene
+from ..spec.fields import SpecError
+from ..spec.solver import EXUDYN_METHODS, SolverSpec
+from .exudyn_connectors import ForceConnector, add_native_contacts, check_native, without_pairs
+from .reference.engine import COORDINATE_NAMES, output_grid
+
+
+def check_supported(scene: Scene, solver: SolverSpec) -> None:
+    """Reject, before anything runs, what Exudyn cannot do with these settings."""
+    settings = solver.exudyn
+    if scene.constraints and not settings.implicit:
+        raise SpecError("solver.exudyn.method", settings.method,
+                        "Exudyn's explicit solvers reject joints; with constraints use generalized_alpha "
+                        "or trapezoidal_index2, or the reference engine")
+    if settings.connector == "native":
+        check_native(scene)
+
+
+def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
+                    spec: dict | None = None) -> Result:
+    import exudyn as exu
+    from exudyn.itemInterface import (
+        MarkerBodyMass, MarkerBodyPosition, MarkerNodeCoordinate, NodePointGround, NodeRigidBody2D,
+        ObjectConnectorCoordinate, ObjectConnectorDistance, ObjectGenericODE2, ObjectGround, ObjectRigidBody2D,
+        LoadMassProportional,
+    )
+
+    check_supported(scene, solver)
+    settings = solver.exudyn
+    progress = progress or ProgressMeter()
+    packed = scene.pack()
+    n, pair_count = scene.coordinate_count, len(scene.pairs)
+    reference, _ = scene.initial_state()
+    latched = np.zeros(pair_count)
+    events = new_events(pair_count)
+    bounds = penetration_bounds(packed.pairs, solver.penetration_limit)
+
+    container = exu.SystemContainer()
+    mbs = container.AddSystem()
+    nodes = [mbs.AddNode(NodeRigidBody2D(referenceCoordinates=list(b.position), initialVelocities=list(b.velocity)))
+             for b in scene.bodies]
+    bodies = [mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=b.mass, inertia=b.inertia))
+              for node, b in zip(nodes, scene.bodies)]
+
+    ground_marker = None
+    for node, body in zip(nodes, scene.bodies):
+        for c in range(3):
+            if not body.free[c]:
+                if ground_marker is None:
+                    ground_node = mbs.AddNode(NodePointGround())
+                    ground_marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground_node, coordinate=0))
+                marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))
+                mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[ground_marker, marker]))
+
+    if any(scene.gravity):
+        for body in bodies:
+            marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
+            mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
+
+    for constraint in scene.constraints:
+        markers = [mbs.AddMarker(MarkerBodyPosition(bodyNumber=bodies[i], localPosition=[0, 0, 0]))
+                   for i in (constraint.body_a, constraint.body_b)]
+        mbs.AddObject(ObjectConnectorDistance(markerNumbers=markers, distance=constraint.length))
+
+    connector = None
+    native = settings.connector == "native"
+    if native:
+        add_native_contacts(mbs, scene, bodies, mbs.AddObject(ObjectGround()) if scene.pairs else -1)
+    force_scene = without_pairs(packed) if native else packed
+    if force_scene.pairs.kind.size or force_scene.load_body.size or force_scene.drive_body.size:
+        # loads and drives next to native contacts go through the compiled kernel
+        connector = ForceConnector(force_scene, reference, latched, compiled=settings.connector != "python")
+        connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
+        connector.evaluations = 0
+        mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector))
+
+    monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress)
+    mbs.SetPostStepUserFunction(monitor)
+    mbs.Assemble()
+
+    simulation = _simulation_settings(exu, settings, end_time)
+    log = Path(tempfile.mkstemp(prefix="exudyn_", suffix=".log")[1])
+    exu.SetWriteToConsole(False)
+    exu.SetWriteToFile(str(log), True, False)
+    progress.start(end_time, f"{scene.name} (exudyn {settings.method}, {settings.connector})")
+    started = time.perf_counter()
+    try:
+        solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType, EXUDYN_METHODS[settings.method]))
+    except Exception as error:  # Exudyn raises on solver failure with some settings
+        solved = False
+        monitor.fail(f"Exudyn stopped with an error: {error}")
+    finally:
+        wall = time.perf_counter() - started
+        progress.close()
+        exu.SetWriteToFile("", False)
+        exu.SetWriteToConsole(True)
+    exudyn_log = log.read_text(errors="replace")
+    log.unlink(missing_ok=True)
+
+    iteration = mbs.sys["dynamicSolver"].it
+    stats = Stats(
+        steps=int(iteration.currentStepIndex) - 1,  # Exudyn counts from 1
+        rejected_steps=int(iteration.rejectedAutomaticStepSizeSteps),
+        force_evaluations=None if native else connector.evaluations if connector else 0,
+        newton_iterations=int(iteration.newtonStepsCount),
+        jacobian_evaluations=int(iteration.newtonJacobiCount),
+        wall_time_s=wall,
+    )
+    if not solved and not monitor.message:
+        monitor.fail(f"t = {monitor.time:.6g} s: Exudyn's {settings.method} solver failed (see the Exudyn log: "
+                     f"{_last_line(exudyn_log)}). Likely fix: reduce the step (now {settings.step:g} s).")
+    if monitor.message:
+        monitor.record_final()
+    out_t, out_q, out_v, out_pairs = monitor.outputs()
+    return Result(
+        engine="exudyn", method=settings.method, step=settings.step, time=out_t, position=out_q, velocity=out_v,
+        pair_output=out_pairs, events=events, body_names=tuple(b.name for b in scene.bodies),
+        pair_names=tuple(p.name for p in scene.pairs), stats=stats,
+        status=FAILED if monitor.message else SUCCESS, message=monitor.message, spec=spec,
+        metadata={"connector": settings.connector, "exudyn_log": exudyn_log, "exudyn_version": exu.__version__},
+    )
+
+
+def _simulation_settings(exu, settings, end_time):
+    s = exu.SimulationSettings()
+    s.solution.file.write = False
+    s.displayComputationTime = False
+    s.displayStatistics = False
+    ti = s.timeIntegration
+    ti.verboseMode = 0
+    ti.endTime = end_time
+    ti.numberOfSteps = max(1, math.ceil(end_time / settings.step * (1 - 1e-12)))
+    ti.discontinuous.useRecommendedStepSize = False  # EXUDYN_NOTES.md §2f
+    ti.explicit.computeEndOfStepAccelerations = False  # saves one force evaluation per step
+    ti.adaptiveStep = False  # implicit solvers keep the requested step (convergence studies need it)
+    ti.automaticStepSize = settings.adaptive
+    ti.absoluteTolerance = settings.tolerance
+    ti.relativeTolerance = settings.tolerance
+    ti.minimumStepSize = 1e-14
+    ti.generalizedAlpha.spectralRadius = settings.spectral_radius
+    ti.newton.relativeTolerance = settings.tolerance
+    return s
+
+
+def _last_line(text: str) -> str:
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    return lines[-1] if lines else "no message"
+
+
+class _StepMonitor:
+    """PostStepUserFunction: per-pair state, events, output at output instants, guards, progress."""
+
+    def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress):
+        self.scene, self.packed, self.reference = scene, packed, reference
+        self.latched, self.events, self.bounds = latched, events, bounds
+        self.solver, self.progress = solver, progress
+        self.output_times = output_grid(end_time, solver.output_interval)
+        self.margin = 1e-3 * solver.exudyn.step
+        self.rows: list[tuple] = []
+        self.message, self.time = "", 0.0
+        self.q, self.v = reference.copy(), np.array([b.velocity for b in scene.bodies], dtype=float).ravel()
+        self._forces = np.empty(reference.size)
+        self._progress_every, self._calls = max(1, int(end_time / solver.exudyn.step / 200)), 0
+        self._record(0.0)
+
+    def _record(self, t):
+        pair_out = np.empty((len(self.latched), N_PAIR_OUTPUTS))
+        scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, pair_out)
+        self.rows.append((t, self.q.copy(), self.v.copy(), pair_out))
+
+    def __call__(self, mbs, t):
+        data = mbs.systemData
+        q = self.reference + np.asarray(data.GetODE2Coordinates())[: self.reference.size]
+        v = np.asarray(data.GetODE2Coordinates_t())[: self.reference.size]
+        if not (np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
+            bad = int(np.flatnonzero(~(np.isfinite(q) & np.isfinite(v)))[0])
+            return self.fail(
+                f"t = {t:.6g} s: the state of body {self.scene.bodies[bad // 3].name!r} "
+                f"({COORDINATE_NAMES[bad % 3]}) became non-finite; the run diverged. Likely fix: reduce the step "
+                f"(now {self.solver.exudyn.step:g} s) or use generalized_alpha.")
+        self.q, self.v, self.time = q, v, t
+        _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
+        if worst >= 0:
+            pair = self.scene.pairs[worst]
+            depth = -self._gap(worst)
+            return self.fail(
+                f"t = {t:.6g} s: pair {pair.name!r} penetrates {depth:.3g} m, beyond the guard of "
+                f"{self.bounds[worst]:.3g} m (penetration_limit = {self.solver.penetration_limit:g} of the radius). "
+                f"Likely fix: reduce the step (now {self.solver.exudyn.step:g} s) or raise the stiffness.")
+        if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
+            self._record(t)
+        self._calls += 1
+        if self._calls % self._progress_every == 0:
+            self.progress.update(t)
+        return True
+
+    def _gap(self, k):
+        from ..contact import twin
+
+        return float(twin.pair_geometry(self.packed.pairs, self.q, self.v)[0][k])
+
+    def fail(self, message: str) -> bool:
+        self.message = self.message or message
+        return False  # tells Exudyn to stop after this step
+
+    def record_final(self):
+        if self.rows[-1][0] < self.time:
+            self._record(self.time)
+
+    def outputs(self):
+        return (np.array([r[0] for r in self.rows]), np.array([r[1] for r in self.rows]),
+                np.array([r[2] for r in self.rows]), np.array([r[3] for r in self.rows]))

@@ -1,0 +1,85 @@
+"""One run, end to end: spec → scene → engine → result → summary and files.
+
+``run_spec`` is a pure function of the spec (plus a progress meter), which is what studies distribute.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+from pathlib import Path
+
+from .analysis import METRICS
+from .builders import build_scene
+from .engines import simulate
+from .progress import ProgressMeter
+from .result import Result
+from .scene import Scene
+from .spec import Spec, to_mapping
+
+log = logging.getLogger(__name__)
+
+RESULT_FILE = "result.npz"
+SUMMARY_FILE = "summary.json"
+
+
+def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, Result]:
+    """Build the scene (all validation happens here, before any simulation) and run it."""
+    scene = build_scene(spec)
+    result = simulate(scene, spec.solver, spec.scenario.end_time, progress, spec=to_mapping(spec))
+    if not result.success:
+        log.warning("%s: %s", spec.scenario.name, result.message)
+    return scene, result
+
+
+def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
+    """The summary.json content: run identity, cost, status and the model's metrics."""
+    summary = {
+        "scenario": spec.scenario.name,
+        "status": result.status,
+        "message": result.message,
+        "engine": result.engine,
+        "solver": result.method,
+        "step": result.step,
+        "end_time": float(result.time[-1]),
+        "wall_time_s": result.stats.wall_time_s,
+        "steps": result.stats.steps,
+        "rejected_steps": result.stats.rejected_steps,
+        "force_evaluations": result.stats.force_evaluations,
+        "newton_iterations": result.stats.newton_iterations,
+        "scene": scene.counts(),
+    }
+    if result.engine == "exudyn":
+        summary["connector"] = result.metadata.get("connector")
+    summary.update(METRICS[spec.scenario.model](scene, result))
+    return {key: _json_safe(value) for key, value in summary.items()}
+
+
+def write_outputs(spec: Spec, scene: Scene, result: Result, directory: str | Path, figures: bool = True) -> dict:
+    """Write the result file first (never lost), then summary.json, then the figures."""
+    from .figures import FIGURES
+
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    result.save(directory / RESULT_FILE)
+    summary = summarize(spec, scene, result)
+    write_json(directory / SUMMARY_FILE, summary)
+    if figures:
+        FIGURES[spec.scenario.model](scene, result, directory)
+    return summary
+
+
+def write_json(path: Path, data) -> None:
+    """Atomic JSON write."""
+    temporary = path.with_name(path.name + ".part")
+    temporary.write_text(json.dumps(data, indent=2) + "\n")
+    temporary.replace(path)
+
+
+def _json_safe(value):
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {k: _json_safe(v) for k, v in value.items()}
+    return value

@@ -1,0 +1,120 @@
+"""``[solver]``: which engine runs the scene and how. Both engines' settings live side by side, so a
+scenario can be switched with ``--engine`` without editing it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .fields import SpecError, in_range, one_of, positive
+
+#: Reference-engine integrators (``bearing_mbs.engines.reference``).
+REFERENCE_METHODS = ("central_difference", "velocity_verlet", "rk4", "dopri5")
+#: Of those, the ones that adapt their step to ``tolerance``.
+REFERENCE_ADAPTIVE = ("dopri5",)
+
+#: Exudyn 1.13.6 ``DynamicSolverType`` members, by our snake-case name.
+EXUDYN_METHODS = {
+    "generalized_alpha": "GeneralizedAlpha",
+    "trapezoidal_index2": "TrapezoidalIndex2",
+    "explicit_euler": "ExplicitEuler",
+    "explicit_midpoint": "ExplicitMidpoint",
+    "rk33": "RK33",
+    "rk44": "RK44",
+    "rk67": "RK67",
+    "velocity_verlet": "VelocityVerlet",
+    "ode23": "ODE23",
+    "dopri5": "DOPRI5",
+    "dverk6": "DVERK6",
+}
+EXUDYN_IMPLICIT = ("generalized_alpha", "trapezoidal_index2")
+EXUDYN_ADAPTIVE = ("ode23", "dopri5", "dverk6")
+CONNECTORS = ("compiled", "python", "native")
+ENGINES = ("reference", "exudyn")
+
+
+@dataclass(frozen=True)
+class ReferenceSolver:
+    """``[solver.reference]``.
+
+    method: one of :data:`REFERENCE_METHODS`. step [s] > 0: the fixed step, or the first and largest step
+    of ``dopri5``. contact_step [s]: ``central_difference`` only, the step used while any pair penetrates
+    (the document's variable-step scheme, eq. 58); it must not exceed ``step``. tolerance: relative and
+    absolute (SI units) error per step for ``dopri5``.
+    """
+
+    method: str = "rk4"
+    step: float = 1e-6
+    contact_step: float | None = None
+    tolerance: float = 1e-8
+
+    def __post_init__(self):
+        one_of("method", self.method, REFERENCE_METHODS)
+        positive("step", self.step)
+        in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
+        if self.contact_step is not None:
+            if self.method != "central_difference":
+                raise SpecError("contact_step", self.contact_step, "only the central_difference method uses it")
+            in_range("contact_step", self.contact_step, 0.0, self.step, low_open=True)
+
+    @property
+    def adaptive(self) -> bool:
+        return self.method in REFERENCE_ADAPTIVE
+
+
+@dataclass(frozen=True)
+class ExudynSolver:
+    """``[solver.exudyn]``.
+
+    method: one of :data:`EXUDYN_METHODS`. step [s] > 0: the fixed step, or the largest step of the
+    adaptive explicit methods. tolerance: relative and absolute tolerance of adaptive methods and the
+    Newton tolerance of implicit ones. connector: how contact forces reach Exudyn: ``compiled`` (the numba
+    kernel in one ObjectGenericODE2), ``python`` (its numpy twin) or ``native`` (Exudyn's
+    ObjectContactSphereSphere, normal force only). spectral_radius: generalized-alpha ρ∞ in [0, 1].
+    """
+
+    method: str = "generalized_alpha"
+    step: float = 1e-5
+    tolerance: float = 1e-8
+    connector: str = "compiled"
+    spectral_radius: float = 0.9
+
+    def __post_init__(self):
+        one_of("method", self.method, tuple(EXUDYN_METHODS))
+        positive("step", self.step)
+        in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
+        one_of("connector", self.connector, CONNECTORS)
+        in_range("spectral_radius", self.spectral_radius, 0.0, 1.0)
+
+    @property
+    def adaptive(self) -> bool:
+        return self.method in EXUDYN_ADAPTIVE
+
+    @property
+    def implicit(self) -> bool:
+        return self.method in EXUDYN_IMPLICIT
+
+
+@dataclass(frozen=True)
+class SolverSpec:
+    """``[solver]``.
+
+    engine: ``reference`` or ``exudyn``. output_interval [s] > 0: spacing of stored output.
+    penetration_limit: a run stops when a pair's penetration exceeds this fraction of its smaller radius
+    (a guard against steps too large for the stiffness), in (0, 1].
+    """
+
+    engine: str = "reference"
+    output_interval: float = 1e-3
+    penetration_limit: float = 0.25
+    reference: ReferenceSolver = field(default_factory=ReferenceSolver)
+    exudyn: ExudynSolver = field(default_factory=ExudynSolver)
+
+    def __post_init__(self):
+        one_of("engine", self.engine, ENGINES)
+        positive("output_interval", self.output_interval)
+        in_range("penetration_limit", self.penetration_limit, 0.0, 1.0, low_open=True)
+
+    @property
+    def active(self) -> ReferenceSolver | ExudynSolver:
+        """The settings of the selected engine."""
+        return self.reference if self.engine == "reference" else self.exudyn
