@@ -1,0 +1,1 @@
+"""Studies: many simulations of one scenario (sensitivity runs in :mod:`.sensitivity`)."""

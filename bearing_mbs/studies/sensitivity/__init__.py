@@ -1,0 +1,58 @@
+"""Sensitivity studies: parameter sweeps, Latin hypercube, Morris and Sobol with SALib, run on Dask
+distributed, persisted run by run and resumable.
+
+The pipeline follows SALib's sample → evaluate → analyze::
+
+    from bearing_mbs.studies.sensitivity import analyze, connect, evaluate, load_study, sample, write_report
+
+    study = load_study("scenarios/study_drop_morris.toml")
+    X = sample(study)                                   # (n, D) design, seeded
+    with connect(workers=2) as client:                  # local cluster; or connect("tcp://host:8786")
+        Y = evaluate(study, X, "out/drop_morris", client)   # table of runs; stored, resumable
+    Si = analyze(study, X, Y)                           # {output: Indices}, Si[o].to_df()
+    write_report(study, Y, Si, "out/drop_morris/report")
+
+or all at once: ``run_study(study, "out/drop_morris", workers=2)``; on the command line:
+``bearing-mbs sweep STUDY.toml --out DIR [--scheduler ADDRESS] [--workers N]``.
+See ``docs/sensitivity.md``.
+"""
+
+from .analysis import Indices, analyze
+from .execution import EvaluationStats, TqdmRunProgress, connect, evaluate, run_table
+from .models import BUILTIN_MODELS, IshigamiModel, RunModel, SimulationModel, ishigami_indices
+from .pipeline import StudyResult, run_study, write_report
+from .runs import Run, plan, run_key
+from .sampling import sample
+from .store import RunStore
+from .study import ANALYZERS, DISTRIBUTIONS, SAMPLERS, Execution, Method, Parameter, Study, load_study
+
+__all__ = [
+    "ANALYZERS",
+    "BUILTIN_MODELS",
+    "DISTRIBUTIONS",
+    "SAMPLERS",
+    "EvaluationStats",
+    "Execution",
+    "Indices",
+    "IshigamiModel",
+    "Method",
+    "Parameter",
+    "Run",
+    "RunModel",
+    "RunStore",
+    "SimulationModel",
+    "Study",
+    "StudyResult",
+    "TqdmRunProgress",
+    "analyze",
+    "connect",
+    "evaluate",
+    "ishigami_indices",
+    "load_study",
+    "plan",
+    "run_key",
+    "run_study",
+    "run_table",
+    "sample",
+    "write_report",
+]
