@@ -45,26 +45,31 @@ def profile_value(times, values, start, count, t):
     return np.interp(t, times[start : start + count], values[start : start + count])
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def pair_geometry(pairs, k, q, v):
-    """Gap, normal, contact point and velocities of b and a at the contact point, for pair k."""
-    a, b = pairs.body_a[k], pairs.body_b[k]
-    bx, by, btheta = q[3 * b], q[3 * b + 1], q[3 * b + 2]
+    """Gap, gap rate, slip, normal, contact point and relative spin of pair k."""
+    return _geometry(pairs.kind[k], pairs.body_a[k], pairs.body_b[k], pairs.anchor[k, 0], pairs.anchor[k, 1],
+                     pairs.direction[k, 0], pairs.direction[k, 1], pairs.radius_a[k], pairs.radius_b[k], q, v)
+
+
+@numba.njit(cache=True, inline="always")
+def _geometry(kind, a, b, anchor_x, anchor_y, direction_x, direction_y, ra, rb, q, v):
+    # Scalars in, scalars out: passing the PairArrays tuple itself into a call costs ~0.4 µs of reference
+    # counting per pair, more than the geometry.
+    bx, by = q[3 * b], q[3 * b + 1]
     bvx, bvy, bomega = v[3 * b], v[3 * b + 1], v[3 * b + 2]
     ax = ay = atheta = avx = avy = aomega = 0.0
     if a >= 0:
         ax, ay, atheta = q[3 * a], q[3 * a + 1], q[3 * a + 2]
         avx, avy, aomega = v[3 * a], v[3 * a + 1], v[3 * a + 2]
-    px, py = kinematics.body_point(ax, ay, atheta, pairs.anchor[k, 0], pairs.anchor[k, 1])
-    rb = pairs.radius_b[k]
-    kind = pairs.kind[k]
+    px, py = kinematics.body_point(ax, ay, atheta, anchor_x, anchor_y)
     if kind == _CIRCLE_LINE:
-        nlx, nly = kinematics.body_vector(atheta, pairs.direction[k, 0], pairs.direction[k, 1])
+        nlx, nly = kinematics.body_vector(atheta, direction_x, direction_y)
         gap, nx, ny = kinematics.circle_line(bx, by, rb, px, py, nlx, nly)
     elif kind == _CIRCLE_IN_CIRCLE:
-        gap, nx, ny = kinematics.circle_in_circle(bx, by, rb, px, py, pairs.radius_a[k])
+        gap, nx, ny = kinematics.circle_in_circle(bx, by, rb, px, py, ra)
     else:  # circle_circle, and circle_point with radius_a = 0
-        gap, nx, ny = kinematics.circle_circle(bx, by, rb, px, py, pairs.radius_a[k])
+        gap, nx, ny = kinematics.circle_circle(bx, by, rb, px, py, ra)
     cx, cy = bx - rb * nx, by - rb * ny
     vbx, vby = kinematics.point_velocity(bvx, bvy, bomega, bx, by, cx, cy)
     vax, vay = kinematics.point_velocity(avx, avy, aomega, ax, ay, cx, cy)
@@ -89,7 +94,7 @@ def update_approach_speeds(pairs, q, v, latched):
         latched[k] = normal.latch_approach_speed(gap, gap_rate, latched[k], pairs.approach_speed_floor[k])
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
 def scene_forces(packed, t, q, v, latched, forces, pair_out):
     """Generalized forces [N, N, N m per body] of contacts, loads and drives, written into ``forces``.
 

@@ -10,15 +10,15 @@
   once per accepted step, calling the same compiled :func:`bearing_mbs.contact.state.advance_pair_state`
   as the reference engine.
 
-Exudyn's console output is captured into ``result.metadata["exudyn_log"]``.
+Exudyn's console output (printed through Python) is captured into ``result.metadata["exudyn_log"]``.
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
-import tempfile
 import time
-from pathlib import Path
 
 import numpy as np
 
@@ -30,7 +30,7 @@ from ..scene import Scene
 from ..spec.fields import SpecError
 from ..spec.solver import EXUDYN_METHODS, SolverSpec
 from .exudyn_connectors import ForceConnector, add_native_contacts, check_native, without_pairs
-from .reference.engine import COORDINATE_NAMES, output_grid
+from .reference.engine import diverged_message, output_grid, penetration_message
 
 
 def check_supported(scene: Scene, solver: SolverSpec) -> None:
@@ -107,23 +107,21 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     mbs.Assemble()
 
     simulation = _simulation_settings(exu, settings, end_time)
-    log = Path(tempfile.mkstemp(prefix="exudyn_", suffix=".log")[1])
-    exu.SetWriteToConsole(False)
-    exu.SetWriteToFile(str(log), True, False)
+    log = io.StringIO()
     progress.start(end_time, f"{scene.name} (exudyn {settings.method}, {settings.connector})")
     started = time.perf_counter()
     try:
-        solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType, EXUDYN_METHODS[settings.method]))
-    except Exception as error:  # Exudyn raises on solver failure with some settings
+        with contextlib.redirect_stdout(log):  # Exudyn prints through Python
+            solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType,
+                                                                     EXUDYN_METHODS[settings.method]))
+    except Exception as error:  # Exudyn raises when a solver gives up
         solved = False
-        monitor.fail(f"Exudyn stopped with an error: {error}")
+        if not monitor.message:
+            monitor.fail(_solver_failure(scene, settings, monitor.time, str(error)))
     finally:
         wall = time.perf_counter() - started
         progress.close()
-        exu.SetWriteToFile("", False)
-        exu.SetWriteToConsole(True)
-    exudyn_log = log.read_text(errors="replace")
-    log.unlink(missing_ok=True)
+    exudyn_log = log.getvalue()
 
     iteration = mbs.sys["dynamicSolver"].it
     stats = Stats(
@@ -135,8 +133,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         wall_time_s=wall,
     )
     if not solved and not monitor.message:
-        monitor.fail(f"t = {monitor.time:.6g} s: Exudyn's {settings.method} solver failed (see the Exudyn log: "
-                     f"{_last_line(exudyn_log)}). Likely fix: reduce the step (now {settings.step:g} s).")
+        monitor.fail(_solver_failure(scene, settings, monitor.time, _last_line(exudyn_log)))
     if monitor.message:
         monitor.record_final()
     out_t, out_q, out_v, out_pairs = monitor.outputs()
@@ -152,15 +149,17 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
 def _simulation_settings(exu, settings, end_time):
     s = exu.SimulationSettings()
     s.solution.file.write = False
-    s.displayComputationTime = False
-    s.displayStatistics = False
+    s.show.computationTime = False
+    s.show.statistics = False
     ti = s.timeIntegration
     ti.verboseMode = 0
     ti.endTime = end_time
     ti.numberOfSteps = max(1, math.ceil(end_time / settings.step * (1 - 1e-12)))
     ti.discontinuous.useRecommendedStepSize = False  # EXUDYN_NOTES.md §2f
     ti.explicit.computeEndOfStepAccelerations = False  # saves one force evaluation per step
-    ti.adaptiveStep = False  # implicit solvers keep the requested step (convergence studies need it)
+    # Implicit solvers halve the step where Newton fails (stick-slip transitions, contact onsets) and recover;
+    # on smooth problems the step stays the requested one.
+    ti.adaptiveStep = True
     ti.automaticStepSize = settings.adaptive
     ti.absoluteTolerance = settings.tolerance
     ti.relativeTolerance = settings.tolerance
@@ -168,6 +167,15 @@ def _simulation_settings(exu, settings, end_time):
     ti.generalizedAlpha.spectralRadius = settings.spectral_radius
     ti.newton.relativeTolerance = settings.tolerance
     return s
+
+
+def _solver_failure(scene, settings, t, detail) -> str:
+    what = "Newton's method did not converge" if settings.implicit else "the solver stopped"
+    hint = ""
+    if settings.implicit and any(p.law.friction_law == "dead_zone" for p in scene.pairs):
+        hint = " The dead_zone friction law is discontinuous, which Newton's method cannot follow: use erf."
+    return (f"t = {t:.6g} s: Exudyn's {settings.method} failed: {what} ({detail}). Likely fix: reduce the step "
+            f"(now {settings.step:g} s).{hint}")
 
 
 def _last_line(text: str) -> str:
@@ -200,32 +208,23 @@ class _StepMonitor:
         data = mbs.systemData
         q = self.reference + np.asarray(data.GetODE2Coordinates())[: self.reference.size]
         v = np.asarray(data.GetODE2Coordinates_t())[: self.reference.size]
-        if not (np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
-            bad = int(np.flatnonzero(~(np.isfinite(q) & np.isfinite(v)))[0])
-            return self.fail(
-                f"t = {t:.6g} s: the state of body {self.scene.bodies[bad // 3].name!r} "
-                f"({COORDINATE_NAMES[bad % 3]}) became non-finite; the run diverged. Likely fix: reduce the step "
-                f"(now {self.solver.exudyn.step:g} s) or use generalized_alpha.")
+        step = self.solver.exudyn.step
+        finite = np.isfinite(q) & np.isfinite(v)
+        speed = np.hypot(v[0::3], v[1::3])
+        if not finite.all() or speed.max() > self.solver.speed_limit:
+            coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
+            return self.fail(diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
+                                              step, blown_up=finite.all()))
         self.q, self.v, self.time = q, v, t
         _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
-            pair = self.scene.pairs[worst]
-            depth = -self._gap(worst)
-            return self.fail(
-                f"t = {t:.6g} s: pair {pair.name!r} penetrates {depth:.3g} m, beyond the guard of "
-                f"{self.bounds[worst]:.3g} m (penetration_limit = {self.solver.penetration_limit:g} of the radius). "
-                f"Likely fix: reduce the step (now {self.solver.exudyn.step:g} s) or raise the stiffness.")
+            return self.fail(penetration_message(self.scene, self.solver, t, worst, q, v, step))
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
             self._record(t)
         self._calls += 1
         if self._calls % self._progress_every == 0:
             self.progress.update(t)
         return True
-
-    def _gap(self, k):
-        from ..contact import twin
-
-        return float(twin.pair_geometry(self.packed.pairs, self.q, self.v)[0][k])
 
     def fail(self, message: str) -> bool:
         self.message = self.message or message

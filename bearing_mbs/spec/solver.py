@@ -65,8 +65,9 @@ class ReferenceSolver:
 class ExudynSolver:
     """``[solver.exudyn]``.
 
-    method: one of :data:`EXUDYN_METHODS`. step [s] > 0: the fixed step, or the largest step of the
-    adaptive explicit methods. tolerance: relative and absolute tolerance of adaptive methods and the
+    method: one of :data:`EXUDYN_METHODS`. step [s] > 0: the fixed step of explicit methods, the largest step
+    of the adaptive explicit methods, and the nominal step of implicit methods (which halve it where Newton's
+    method fails, e.g. at a stick–slip transition, and recover). tolerance: relative and absolute tolerance of adaptive methods and the
     Newton tolerance of implicit ones. connector: how contact forces reach Exudyn: ``compiled`` (the numba
     kernel in one ObjectGenericODE2), ``python`` (its numpy twin) or ``native`` (Exudyn's
     ObjectContactSphereSphere, normal force only). spectral_radius: generalized-alpha ρ∞ in [0, 1].
@@ -100,12 +101,14 @@ class SolverSpec:
 
     engine: ``reference`` or ``exudyn``. output_interval [s] > 0: spacing of stored output.
     penetration_limit: a run stops when a pair's penetration exceeds this fraction of its smaller radius
-    (a guard against steps too large for the stiffness), in (0, 1].
+    (a guard against steps too large for the stiffness), in (0, 1]. speed_limit [m/s] > 0: a run stops
+    when a body's centre moves faster (a blow-up that stays finite).
     """
 
     engine: str = "reference"
     output_interval: float = 1e-3
     penetration_limit: float = 0.25
+    speed_limit: float = 1e3
     reference: ReferenceSolver = field(default_factory=ReferenceSolver)
     exudyn: ExudynSolver = field(default_factory=ExudynSolver)
 
@@ -113,6 +116,7 @@ class SolverSpec:
         one_of("engine", self.engine, ENGINES)
         positive("output_interval", self.output_interval)
         in_range("penetration_limit", self.penetration_limit, 0.0, 1.0, low_open=True)
+        positive("speed_limit", self.speed_limit)
 
     @property
     def active(self) -> ReferenceSolver | ExudynSolver:

@@ -51,7 +51,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     contact_step = settings.contact_step or 0.0
 
     def run(t, t_stop, h_adaptive, index):
-        return ig.integrate(method, packed, *tab, q, v, latched, events, bounds, t, t_stop, settings.step,
+        return ig.integrate(method, packed, *tab, q, v, latched, events, bounds, solver.speed_limit, t, t_stop, settings.step,
                             contact_step, settings.tolerance, h_adaptive, times, index, out_t, out_q, out_v,
                             out_pairs, counters)
 
@@ -82,7 +82,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     if status != ig.RUNNING:
         message = _failure_message(scene, solver, status, culprit, t, q, v, latched, h_adaptive)
         scene_forces(packed, t, q, v, latched, forces, pair_out)  # keep the state where the run stopped
-        out_t, out_q, out_v, out_pairs = (np.concatenate([a[:index], b[None]]) for a, b in
+        out_t, out_q, out_v, out_pairs = (np.concatenate([a[:index], np.asarray(b)[None]]) for a, b in
                                           ((out_t, t), (out_q, q), (out_v, v), (out_pairs, pair_out)))
     return Result(
         engine="reference", method=settings.method, step=settings.step, time=out_t, position=out_q,
@@ -105,23 +105,40 @@ def _backward_difference_start(packed, q, v, latched, settings, times):
 
 def _failure_message(scene, solver, status, culprit, t, q, v, latched, h) -> str:
     step = solver.reference.step
-    if status == ig.NONFINITE:
-        body = scene.bodies[culprit // 3].name
-        return (f"t = {t:.6g} s: the state of body {body!r} ({COORDINATE_NAMES[culprit % 3]}) became non-finite; "
-                f"the run diverged. Likely fix: reduce the step (now {step:g} s) below the advice of "
-                f"`bearing-mbs advise`, or use Exudyn's generalized-alpha solver.")
+    if status in (ig.NONFINITE, ig.BLOWUP):
+        return diverged_message(scene, solver, t, culprit, q, v, latched, step, blown_up=status == ig.BLOWUP)
     if status == ig.PENETRATION:
-        pair = scene.pairs[culprit]
-        gap = -_gap_of(scene, culprit, q, v)
-        bound = penetration_bounds(scene.pack().pairs, solver.penetration_limit)[culprit]
-        return (f"t = {t:.6g} s: pair {pair.name!r} penetrates {gap:.3g} m, beyond the guard of {bound:.3g} m "
-                f"(penetration_limit = {solver.penetration_limit:g} of the radius). Likely fix: reduce the step "
-                f"(now {step:g} s) so the contact is resolved, or raise the stiffness (K = {pair.law.stiffness:.3g}).")
+        return penetration_message(scene, solver, t, culprit, q, v, step)
     if status == ig.STEP_UNDERFLOW:
         return (f"t = {t:.6g} s: the adaptive step fell to {h:.3g} s. Likely fix: loosen the tolerance "
                 f"(now {solver.reference.tolerance:g}) or raise the friction regularisation speed.")
     return (f"t = {t:.6g} s: the constraint projection did not converge. Likely fix: reduce the step "
             f"(now {step:g} s).")
+
+
+def diverged_message(scene, solver, t, coordinate, q, v, latched, step, blown_up) -> str:
+    """A run diverged: name the body, the most engaged pair (smallest gap) in the last good state, a fix."""
+    body = scene.bodies[coordinate // 3].name
+    what = (f"moves faster than speed_limit = {solver.speed_limit:g} m/s" if blown_up
+            else f"({COORDINATE_NAMES[coordinate % 3]}) became non-finite")
+    culprit = ""
+    if scene.pairs:
+        pair_out = np.empty((len(scene.pairs), N_PAIR_OUTPUTS))
+        scene_forces(scene.pack(), t, q, v, latched, np.empty_like(q), pair_out)
+        k = int(np.argmin(pair_out[:, 0]))
+        culprit = (f" The most engaged pair in the last good state was {scene.pairs[k].name!r} "
+                   f"(gap {pair_out[k, 0]:.3g} m, normal force {pair_out[k, 3]:.3g} N).")
+    return (f"t = {t:.6g} s: body {body!r} {what}; the run diverged.{culprit} Likely fix: reduce the step "
+            f"(now {step:g} s) below the explicit stability limit, or use Exudyn's generalized-alpha solver.")
+
+
+def penetration_message(scene, solver, t, k, q, v, step) -> str:
+    pair = scene.pairs[k]
+    depth = -_gap_of(scene, k, q, v)
+    bound = penetration_bounds(scene.pack().pairs, solver.penetration_limit)[k]
+    return (f"t = {t:.6g} s: pair {pair.name!r} penetrates {depth:.3g} m, beyond the guard of {bound:.3g} m "
+            f"(penetration_limit = {solver.penetration_limit:g} of the radius). Likely fix: reduce the step "
+            f"(now {step:g} s) so the contact is resolved, or raise the stiffness (K = {pair.law.stiffness:.3g}).")
 
 
 def _gap_of(scene, k, q, v):

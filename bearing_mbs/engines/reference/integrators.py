@@ -38,12 +38,12 @@ METHOD_CODES = {"central_difference": CENTRAL_DIFFERENCE, "velocity_verlet": VEL
                 "rk4": RUNGE_KUTTA, "dopri5": RUNGE_KUTTA}
 
 # Status codes returned by integrate().
-RUNNING, NONFINITE, PENETRATION, STEP_UNDERFLOW, PROJECTION_FAILED = 0, 1, 2, 3, 4
+RUNNING, NONFINITE, PENETRATION, STEP_UNDERFLOW, PROJECTION_FAILED, BLOWUP = 0, 1, 2, 3, 4, 5
 # Counter slots.
 STEPS, REJECTED, EVALUATIONS = 0, 1, 2
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def accelerations(packed, t, q, v, latched, a, forces, pair_out):
     """a = M⁻¹ f(t, q, v) + gravity, made consistent with the constraints."""
     scene_forces(packed, t, q, v, latched, forces, pair_out)
@@ -58,25 +58,25 @@ def _rk_step(packed, tab_a, tab_b, tab_c, t, h, q, v, latched, kq, kv, first_rea
              q_new, v_new, stage_q, stage_v, forces, pair_out, counters):
     """One explicit RK step on (q, v): stages into kq (velocities) and kv (accelerations), result into
     q_new, v_new. With ``first_ready`` the first stage f(t, q, v) is already in kq[0], kv[0]."""
-    stages = tab_b.size
+    stages, n = tab_b.size, q.size
     for i in range(stages):
         if i == 0 and first_ready:
             continue
-        stage_q[:] = q
-        stage_v[:] = v
-        for j in range(i):
-            if tab_a[i, j] != 0.0:
-                stage_q += h * tab_a[i, j] * kq[j]
-                stage_v += h * tab_a[i, j] * kv[j]
-        kq[i, :] = stage_v
+        for m in range(n):  # explicit loops: array expressions would allocate temporaries every stage
+            position, velocity = q[m], v[m]
+            for j in range(i):
+                position += h * tab_a[i, j] * kq[j, m]
+                velocity += h * tab_a[i, j] * kv[j, m]
+            stage_q[m], stage_v[m] = position, velocity
+            kq[i, m] = velocity
         accelerations(packed, t + tab_c[i] * h, stage_q, stage_v, latched, kv[i], forces, pair_out)
         counters[EVALUATIONS] += 1
-    q_new[:] = q
-    v_new[:] = v
-    for i in range(stages):
-        if tab_b[i] != 0.0:
-            q_new += h * tab_b[i] * kq[i]
-            v_new += h * tab_b[i] * kv[i]
+    for m in range(n):
+        position, velocity = q[m], v[m]
+        for i in range(stages):
+            position += h * tab_b[i] * kq[i, m]
+            velocity += h * tab_b[i] * kv[i, m]
+        q_new[m], v_new[m] = position, velocity
 
 
 @numba.njit(cache=True)
@@ -98,12 +98,12 @@ def _error_norm(tab_b, tab_e, h, q, v, q_new, v_new, kq, kv, tolerance):
 
 @numba.njit(cache=True)
 def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
-              q, v, latched, events, penetration_bound, t, t_stop, step, contact_step, tolerance, h_adaptive,
+              q, v, latched, events, penetration_bound, speed_limit, t, t_stop, step, contact_step, tolerance, h_adaptive,
               output_times, output_index, out_t, out_q, out_v, out_pairs, counters):
     """Advance from t to t_stop (an output time), writing outputs on the way.
 
     Returns (t, h_adaptive, output_index, status, culprit): ``culprit`` is the offending pair (penetration)
-    or coordinate (non-finite state), −1 otherwise.
+    or coordinate (non-finite state, blow-up), −1 otherwise. On a stop, q and v hold the last good state.
     """
     n = q.size
     adaptive = tab_e.size > 0
@@ -184,6 +184,9 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
             for i in range(n):
                 if not (math.isfinite(q_new[i]) and math.isfinite(v_new[i])):
                     return t, h_adaptive, output_index, NONFINITE, i
+            for body in range(n // 3):
+                if v_new[3 * body] ** 2 + v_new[3 * body + 1] ** 2 > speed_limit**2:
+                    return t, h_adaptive, output_index, BLOWUP, 3 * body
             q[:] = q_new
             v[:] = v_new
             if adaptive:

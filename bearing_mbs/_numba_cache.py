@@ -1,0 +1,38 @@
+"""Invalidate numba's on-disk cache when any compiled source of the package changes.
+
+numba keys a cached function on its own file only: after an edit to ``contact/normal.py`` a cached
+``engines/reference/integrators.integrate`` would still hold the old law. At import, the package hashes all
+the sources that compiled code is made of (:data:`COMPILED_SOURCES`; keep numba code there); when the hash differs from the one stored next to the cache, every ``*.nbi``/``*.nbc`` file of
+the package is removed and numba recompiles.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
+PACKAGE = Path(__file__).resolve().parent
+STAMP = PACKAGE / "__pycache__" / "numba_sources.sha256"
+#: Globs (relative to the package) of every file whose code numba compiles or whose types it reads.
+COMPILED_SOURCES = ("contact/*.py", "engines/reference/*.py", "scene.py")
+
+
+def sources_digest() -> str:
+    digest = hashlib.sha256()
+    for path in sorted(p for pattern in COMPILED_SOURCES for p in PACKAGE.glob(pattern)):
+        digest.update(path.relative_to(PACKAGE).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def invalidate_if_stale() -> None:
+    try:
+        current = sources_digest()
+        if STAMP.exists() and STAMP.read_text() == current:
+            return
+        for cached in [*PACKAGE.rglob("*.nbi"), *PACKAGE.rglob("*.nbc")]:
+            cached.unlink(missing_ok=True)
+        STAMP.parent.mkdir(exist_ok=True)
+        STAMP.write_text(current)
+    except OSError:  # a read-only installation: numba falls back to its own behaviour
+        pass
