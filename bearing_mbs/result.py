@@ -37,8 +37,11 @@ class Result:
 
     time [s] (T,); position and velocity (T, 3N): (x, y, θ) and (vx, vy, ω) per body; pair_output
     (T, P, len(PAIR_OUTPUTS)): gap [m], gap_rate [m/s], slip [m/s], normal_force [N], friction_force [N],
-    rolling_moment [N m], power_loss [W]; events (P, 4): first impact and separation of each pair.
-    status is ``success`` or ``failed``; message says why a run stopped early.
+    rolling_moment [N m], power_loss [W], rolling_speed [m/s]; constraint_forces (T, C): the force of each
+    constraint on its second body [N]; work (T, 2): cumulative work supplied by loads and drives and work
+    dissipated by the contacts [J], integrated by the engine step by step; events (P, 4): first impact and
+    separation of each pair. Sensors a scene does not list (:attr:`bearing_mbs.scene.Scene.sensors`) are left
+    empty. status is ``success`` or ``failed``; message says why a run stopped early.
     """
 
     engine: str
@@ -48,6 +51,8 @@ class Result:
     position: np.ndarray
     velocity: np.ndarray
     pair_output: np.ndarray
+    constraint_forces: np.ndarray
+    work: np.ndarray
     events: np.ndarray
     body_names: tuple[str, ...]
     pair_names: tuple[str, ...]
@@ -74,7 +79,7 @@ class Result:
     def event(self, pair: str, column: str) -> float:
         return float(self.events[self.pair(pair), EVENT_COLUMNS.index(column)])
 
-    _ARRAYS = ("time", "position", "velocity", "pair_output", "events")
+    _ARRAYS = ("time", "position", "velocity", "pair_output", "constraint_forces", "work", "events")
 
     def save(self, path: str | Path) -> Path:
         """Write ``path`` (``.npz``) atomically: a crash never leaves a half-written file."""

@@ -52,7 +52,7 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
     }
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")
-    summary.update(METRICS[spec.scenario.model](scene, result))
+    summary.update(METRICS[spec.scenario.model](spec, scene, result))
     return {key: _json_safe(value) for key, value in summary.items()}
 
 

@@ -104,6 +104,26 @@ class DistanceConstraint:
 
 
 @dataclass(frozen=True)
+class PointOnLineConstraint:
+    """The centre of body b stays on a line fixed in body a: through ``anchor`` [m] along the unit
+    ``direction`` (both in a's frame). Motion along the line and b's rotation stay free (the constraint
+    cage: a roller on its pocket's radial line)."""
+
+    name: str
+    body_a: int
+    body_b: int
+    anchor: tuple[float, float]
+    direction: tuple[float, float]
+
+
+#: Constraint kinds in the order of their integer codes in compiled code.
+CONSTRAINT_KINDS = (DistanceConstraint, PointOnLineConstraint)
+
+#: What an engine can record; a scene lists only what it needs (see :meth:`Scene.sensors`).
+SENSORS = ("bodies", "pairs", "constraints", "energy")
+
+
+@dataclass(frozen=True)
 class Profile:
     """A time function: piecewise linear through (times [s], values), constant outside."""
 
@@ -151,7 +171,7 @@ class Scene:
     name: str
     bodies: tuple[Body, ...]
     pairs: tuple[ContactPair, ...] = ()
-    constraints: tuple[DistanceConstraint, ...] = ()
+    constraints: tuple[DistanceConstraint | PointOnLineConstraint, ...] = ()
     loads: tuple[Load, ...] = ()
     drives: tuple[VelocityServo, ...] = ()
     gravity: tuple[float, float] = (0.0, 0.0)
@@ -169,6 +189,19 @@ class Scene:
     def coordinate_count(self) -> int:
         return 3 * len(self.bodies)
 
+    @property
+    def sensors(self) -> tuple[str, ...]:
+        """What the engines record: body states always; pair outputs when there are pairs; constraint forces
+        when there are constraints; the energy audit (work of losses and of loads and drives) when anything
+        can dissipate or do work."""
+        wanted = {
+            "bodies": True,
+            "pairs": bool(self.pairs),
+            "constraints": bool(self.constraints),
+            "energy": bool(self.pairs or self.loads or self.drives),
+        }
+        return tuple(name for name in SENSORS if wanted[name])
+
     def counts(self) -> dict:
         """Item counts, for the 'only what is needed' tests and for reports."""
         return {
@@ -177,6 +210,7 @@ class Scene:
             "constraints": len(self.constraints),
             "loads": len(self.loads) + (1 if any(self.gravity) else 0),
             "drives": len(self.drives),
+            "sensors": len(self.sensors),
         }
 
     def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
@@ -210,11 +244,14 @@ class PairArrays(NamedTuple):
 
 
 class ConstraintArrays(NamedTuple):
-    """Distance constraints as arrays."""
+    """Constraints as arrays (unused columns of a kind are zero)."""
 
+    kind: np.ndarray  # int64, index into CONSTRAINT_KINDS
     body_a: np.ndarray  # int64
     body_b: np.ndarray  # int64
-    length: np.ndarray  # [m]
+    length: np.ndarray  # [m], distance constraints
+    anchor: np.ndarray  # (C, 2) [m], point-on-line constraints, in a's frame
+    direction: np.ndarray  # (C, 2), point-on-line constraints, unit, in a's frame
 
 
 class PackedScene(NamedTuple):
@@ -257,6 +294,20 @@ def _pack_pairs(pairs) -> PairArrays:
     )
 
 
+def _pack_constraints(constraints) -> ConstraintArrays:
+    def column(get, dtype=float):
+        return np.array([get(c) for c in constraints], dtype=dtype)
+
+    return ConstraintArrays(
+        kind=column(lambda c: CONSTRAINT_KINDS.index(type(c)), np.int64),
+        body_a=column(lambda c: c.body_a, np.int64),
+        body_b=column(lambda c: c.body_b, np.int64),
+        length=column(lambda c: getattr(c, "length", 0.0)),
+        anchor=column(lambda c: getattr(c, "anchor", (0.0, 0.0))).reshape(-1, 2),
+        direction=column(lambda c: getattr(c, "direction", (0.0, 0.0))).reshape(-1, 2),
+    )
+
+
 def pack_scene(scene: Scene) -> PackedScene:
     free = np.array([b.free for b in scene.bodies], dtype=bool).ravel()
     inverse_mass = np.array([[1 / b.mass, 1 / b.mass, 1 / b.inertia] for b in scene.bodies]).ravel() * free
@@ -275,11 +326,7 @@ def pack_scene(scene: Scene) -> PackedScene:
         inverse_mass=inverse_mass,
         gravity=gravity,
         pairs=_pack_pairs(scene.pairs),
-        constraints=ConstraintArrays(
-            body_a=np.array([c.body_a for c in scene.constraints], dtype=np.int64),
-            body_b=np.array([c.body_b for c in scene.constraints], dtype=np.int64),
-            length=np.array([c.length for c in scene.constraints], dtype=float),
-        ),
+        constraints=_pack_constraints(scene.constraints),
         load_body=np.array([item.body for item in scene.loads], dtype=np.int64),
         load_vector=np.array([item.vector for item in scene.loads], dtype=float).reshape(-1, 3),
         load_profile=index[:n_loads],

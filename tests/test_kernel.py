@@ -136,3 +136,41 @@ def test_separated_pairs_exert_no_force(kind):
     forces, pair_out = evaluate(kernel, Scene("s", bodies, (pair,)).pack(), 0.0, *Scene("s", bodies).initial_state(), np.zeros(1))
     assert pair_out[0, 0] > 0
     assert np.all(forces == 0.0)
+
+
+def test_rolling_speed_is_relative_to_the_moving_contact_point():
+    """u = t·(v_a(p) + v_b(p))/2 − t·ṗ, with ṗ from central differences of p = c_b − r_b n (1e-6 relative)."""
+    rng = np.random.default_rng(5)
+    scene = random_scene(rng)
+    pairs = scene.pack().pairs
+    q, v, _ = random_state(rng, scene)
+    eps = 1e-7
+    _, _, _, nx, ny, cx, cy, _, rolling = twin.pair_geometry(pairs, q, v)
+    plus = twin.pair_geometry(pairs, q + eps * v, v)
+    minus = twin.pair_geometry(pairs, q - eps * v, v)
+    pvx, pvy = (plus[5] - minus[5]) / (2 * eps), (plus[6] - minus[6]) / (2 * eps)
+    qb, vb = q.reshape(-1, 3), v.reshape(-1, 3)
+
+    def surface_velocity(body, x, y):
+        vx = np.where(body < 0, 0.0, vb[body, 0] - vb[body, 2] * (y - qb[body, 1]))
+        vy = np.where(body < 0, 0.0, vb[body, 1] + vb[body, 2] * (x - qb[body, 0]))
+        return vx, vy
+
+    vax, vay = surface_velocity(pairs.body_a, cx, cy)
+    vbx, vby = surface_velocity(pairs.body_b, cx, cy)
+    expected = 0.5 * (-ny * (vax + vbx) + nx * (vay + vby)) - (-ny * pvx + nx * pvy)
+    np.testing.assert_allclose(rolling, expected, rtol=1e-6, atol=1e-8)
+
+
+def test_pure_rolling_inside_a_fixed_ring_has_zero_slip_and_the_orbital_rolling_speed():
+    """A roller of radius r rolling without slip inside a fixed ring of radius R: slip 0, |u| = Ω R."""
+    ring, roller, orbit = 0.13, 0.0125, 70.0
+    centre = ring - roller
+    spin = -orbit * centre / roller  # the contact point on the roller is at rest
+    law = PairLaw("power", 1e9, 10 / 9, 1.0, 0.0, 1e-3)
+    body = Body("roller", 0.2, 1e-5, (centre, 0.0, 0.0), (0.0, orbit * centre, spin))
+    pair = ContactPair("p", "circle_in_circle", GROUND, 0, law, radius_b=roller, radius_a=ring)
+    scene = Scene("s", (body,), (pair,))
+    _, pair_out = evaluate(kernel, scene.pack(), 0.0, *scene.initial_state(), np.zeros(1))
+    assert abs(pair_out[0, 2]) < 1e-12
+    assert abs(pair_out[0, 7]) == pytest.approx(orbit * ring, rel=1e-12)

@@ -3,8 +3,9 @@
 from ..spec import Spec
 from ..scene import Scene
 from .balls import build_balls_scene
+from .bearing import build_bearing_scene
 
-BUILDERS = {"balls": build_balls_scene}
+BUILDERS = {"balls": build_balls_scene, "bearing": build_bearing_scene}
 
 
 def build_scene(spec: Spec) -> Scene:

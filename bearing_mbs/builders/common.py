@@ -10,12 +10,13 @@ from ..scene import PairLaw, Scene
 from ..spec import ContactSpec, SpecError
 
 
-def pair_law(contact: ContactSpec) -> PairLaw:
-    """Resolve a group's contact settings into the numbers the kernels read."""
+def pair_law(contact: ContactSpec, stiffness: float | None = None, exponent: float | None = None) -> PairLaw:
+    """Resolve a group's contact settings into the numbers the kernels read; ``stiffness`` and ``exponent``
+    replace the given ones when a stiffness model derives them."""
     return PairLaw(
         normal_law=contact.normal_law,
-        stiffness=contact.stiffness,
-        exponent=contact.exponent,
+        stiffness=contact.stiffness if stiffness is None else float(stiffness),
+        exponent=contact.exponent if exponent is None else float(exponent),
         restitution=contact.restitution,
         damping_factor=float(DAMPING_FACTOR[contact.normal_law](contact.restitution)),
         approach_speed_floor=contact.approach_speed_floor,

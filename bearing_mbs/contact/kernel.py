@@ -14,8 +14,9 @@ import numpy as np
 
 from . import friction, kinematics, normal
 
-#: Columns of the per-pair output array, in order; units: m, m/s, m/s, N, N, N m, W.
-PAIR_OUTPUTS = ("gap", "gap_rate", "slip", "normal_force", "friction_force", "rolling_moment", "power_loss")
+#: Columns of the per-pair output array, in order; units: m, m/s, m/s, N, N, N m, W, m/s.
+PAIR_OUTPUTS = ("gap", "gap_rate", "slip", "normal_force", "friction_force", "rolling_moment", "power_loss",
+                "rolling_speed")
 N_PAIR_OUTPUTS = len(PAIR_OUTPUTS)
 
 
@@ -47,7 +48,7 @@ def profile_value(times, values, start, count, t):
 
 @numba.njit(cache=True, inline="always")
 def pair_geometry(pairs, k, q, v):
-    """Gap, gap rate, slip, normal, contact point and relative spin of pair k."""
+    """Gap, gap rate, slip, normal, contact point, relative spin and rolling speed of pair k."""
     return _geometry(pairs.kind[k], pairs.body_a[k], pairs.body_b[k], pairs.anchor[k, 0], pairs.anchor[k, 1],
                      pairs.direction[k, 0], pairs.direction[k, 1], pairs.radius_a[k], pairs.radius_b[k], q, v)
 
@@ -63,25 +64,30 @@ def _geometry(kind, a, b, anchor_x, anchor_y, direction_x, direction_y, ra, rb, 
         ax, ay, atheta = q[3 * a], q[3 * a + 1], q[3 * a + 2]
         avx, avy, aomega = v[3 * a], v[3 * a + 1], v[3 * a + 2]
     px, py = kinematics.body_point(ax, ay, atheta, anchor_x, anchor_y)
+    pvx, pvy = kinematics.point_velocity(avx, avy, aomega, ax, ay, px, py)
     if kind == _CIRCLE_LINE:
         nlx, nly = kinematics.body_vector(atheta, direction_x, direction_y)
         gap, nx, ny = kinematics.circle_line(bx, by, rb, px, py, nlx, nly)
+        normal_rate = aomega
     elif kind == _CIRCLE_IN_CIRCLE:
         gap, nx, ny = kinematics.circle_in_circle(bx, by, rb, px, py, ra)
+        normal_rate = -kinematics.centre_line_rate(nx, ny, bvx - pvx, bvy - pvy, max(ra - rb - gap, 1e-300))
     else:  # circle_circle, and circle_point with radius_a = 0
         gap, nx, ny = kinematics.circle_circle(bx, by, rb, px, py, ra)
+        normal_rate = kinematics.centre_line_rate(nx, ny, bvx - pvx, bvy - pvy, max(gap + ra + rb, 1e-300))
     cx, cy = bx - rb * nx, by - rb * ny
     vbx, vby = kinematics.point_velocity(bvx, bvy, bomega, bx, by, cx, cy)
     vax, vay = kinematics.point_velocity(avx, avy, aomega, ax, ay, cx, cy)
     gap_rate, slip = kinematics.relative_motion(nx, ny, vbx, vby, vax, vay)
-    return gap, gap_rate, slip, nx, ny, cx, cy, bomega - aomega
+    rolling = kinematics.rolling_speed(nx, ny, vbx, vby, vax, vay, bvx, bvy, rb, normal_rate)
+    return gap, gap_rate, slip, nx, ny, cx, cy, bomega - aomega, rolling
 
 
 @numba.njit(cache=True)
 def pair_gaps(pairs, q, v, gaps, gap_rates):
     """Gap and gap rate of every pair (for state updates, guards and event detection)."""
     for k in range(pairs.kind.size):
-        gap, gap_rate, _, _, _, _, _, _ = pair_geometry(pairs, k, q, v)
+        gap, gap_rate, _, _, _, _, _, _, _ = pair_geometry(pairs, k, q, v)
         gaps[k] = gap
         gap_rates[k] = gap_rate
 
@@ -90,7 +96,7 @@ def pair_gaps(pairs, q, v, gaps, gap_rates):
 def update_approach_speeds(pairs, q, v, latched):
     """Latch or reset every pair's approach speed; call once per accepted step."""
     for k in range(pairs.kind.size):
-        gap, gap_rate, _, _, _, _, _, _ = pair_geometry(pairs, k, q, v)
+        gap, gap_rate, _, _, _, _, _, _, _ = pair_geometry(pairs, k, q, v)
         latched[k] = normal.latch_approach_speed(gap, gap_rate, latched[k], pairs.approach_speed_floor[k])
 
 
@@ -98,13 +104,15 @@ def update_approach_speeds(pairs, q, v, latched):
 def scene_forces(packed, t, q, v, latched, forces, pair_out):
     """Generalized forces [N, N, N m per body] of contacts, loads and drives, written into ``forces``.
 
-    ``pair_out`` (pairs × :data:`PAIR_OUTPUTS`) receives each pair's gap, gap rate, slip, forces and the
-    power it dissipates. Gravity and constraint forces are the engines' business.
+    ``pair_out`` (pairs × :data:`PAIR_OUTPUTS`) receives each pair's gap, gap rate, slip, forces, the power it
+    dissipates and its rolling speed. Returns (input power of loads and drives, dissipated power) [W].
+    Gravity and constraint forces are the engines' business.
     """
     forces[:] = 0.0
     pairs = packed.pairs
+    dissipated = 0.0
     for k in range(pairs.kind.size):
-        gap, gap_rate, slip, nx, ny, cx, cy, spin = pair_geometry(pairs, k, q, v)
+        gap, gap_rate, slip, nx, ny, cx, cy, spin, rolling = pair_geometry(pairs, k, q, v)
         fn = ft = moment = loss = 0.0
         if gap < 0.0:
             approach = normal.reference_approach_speed(latched[k], gap_rate, pairs.approach_speed_floor[k])
@@ -133,15 +141,23 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out):
         pair_out[k, 4] = ft
         pair_out[k, 5] = moment
         pair_out[k, 6] = loss
+        pair_out[k, 7] = rolling
+        dissipated += loss
+    supplied = 0.0
     for j in range(packed.load_body.size):
         scale = profile_value(
             packed.profile_times, packed.profile_values, packed.load_profile[j, 0], packed.load_profile[j, 1], t
         )
         for c in range(3):
-            forces[3 * packed.load_body[j] + c] += scale * packed.load_vector[j, c]
+            i = 3 * packed.load_body[j] + c
+            forces[i] += scale * packed.load_vector[j, c]
+            supplied += scale * packed.load_vector[j, c] * v[i]
     for j in range(packed.drive_body.size):
         speed = profile_value(
             packed.profile_times, packed.profile_values, packed.drive_profile[j, 0], packed.drive_profile[j, 1], t
         )
         i = 3 * packed.drive_body[j] + 2
-        forces[i] += packed.drive_gain[j] * (speed - v[i])
+        torque = packed.drive_gain[j] * (speed - v[i])
+        forces[i] += torque
+        supplied += torque * v[i]
+    return supplied, dissipated

@@ -8,7 +8,9 @@ direction in which the normal force acts on body b. The contact point is on b's 
 
 * gap rate :math:`\dot g = n \cdot v_{rel}` (exact: the rotational parts vanish along n for these shapes,
   and the tests check it against finite differences of the gap);
-* slip speed :math:`v = t \cdot v_{rel}`, :math:`t = (-n_y, n_x)`.
+* slip speed :math:`v = t \cdot v_{rel}`, :math:`t = (-n_y, n_x)`;
+* rolling speed :math:`u`: the mean speed of both surfaces relative to the moving contact point (see
+  :func:`rolling_speed`).
 
 Only ufuncs and arithmetic are used, so the numpy twin and the numba kernel share this source.
 Coincident centres (e.g. a concentric cage and land) give :math:`n = 0` and no NaN.
@@ -80,3 +82,21 @@ def relative_motion(nx, ny, vbx, vby, vax, vay):
     """Gap rate [m/s] and slip speed [m/s] from the contact points' velocities on b and a."""
     rx, ry = vbx - vax, vby - vay
     return nx * rx + ny * ry, -ny * rx + nx * ry
+
+
+@register_jitable
+def centre_line_rate(nx, ny, relative_vx, relative_vy, distance):
+    """Rotation rate [rad/s] of the line from a's centre point to b's centre (distance > 0), given b's
+    centre velocity relative to that point: the normal of a circle–circle, hollow or point pair turns with
+    it (with the opposite sign for the hollow circle, whose normal points inwards)."""
+    return (-ny * relative_vx + nx * relative_vy) / distance
+
+
+@register_jitable
+def rolling_speed(nx, ny, vbx, vby, vax, vay, cbvx, cbvy, radius_b, normal_rate):
+    r"""Rolling (entrainment) speed [m/s]: the mean speed of the two surfaces relative to the moving contact
+    point, :math:`u = t\cdot(v_b(p) + v_a(p))/2 - t\cdot\dot p` with :math:`\dot p = \dot c_b - r_b\dot\varphi t`
+    (:math:`p = c_b - r_b n`, the normal turning at :math:`\dot\varphi`). Slip over rolling speed is the
+    slip ratio of a rolling contact: 0 in pure rolling even against a fixed raceway."""
+    contact_point_speed = -ny * cbvx + nx * cbvy - radius_b * normal_rate
+    return 0.5 * (-ny * (vbx + vax) + nx * (vby + vay)) - contact_point_speed

@@ -197,3 +197,19 @@ def sliced_contact(approach, tilt, positions, drops, width, coefficient, exponen
         energy=energy.sum(axis=-1),
         slice_forces=slice_forces,
     )
+
+
+@register_jitable
+def effective_modulus(youngs_1, poisson_1, youngs_2, poisson_2):
+    r"""Effective modulus :math:`E^* = [(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]^{-1}` [Pa] of two bodies in contact.
+
+    Palmgren's law is a fit for steel on steel. For other pairs (a bronze cage on a steel roller) we scale
+    its stiffness by :math:`E^*/E^*_{steel}`: to first order the line-contact approach is inversely
+    proportional to :math:`E^*` (K. L. Johnson, Contact Mechanics, 1985, §5.6), an approximation documented
+    where it is used.
+    """
+    return 1.0 / ((1.0 - poisson_1**2) / youngs_1 + (1.0 - poisson_2**2) / youngs_2)
+
+
+#: :math:`E^*` of bearing steel on bearing steel (E = 208 GPa, ν = 0.3), the reference of Palmgren's fit.
+STEEL_EFFECTIVE_MODULUS = effective_modulus(208e9, 0.3, 208e9, 0.3)

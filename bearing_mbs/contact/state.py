@@ -43,7 +43,7 @@ def advance_pair_state(pairs, q, v, t, latched, events, penetration_bound):
     changed = False
     worst, worst_excess = -1, 1.0
     for k in range(pairs.kind.size):
-        gap, gap_rate, _, _, _, _, _, _ = pair_geometry(pairs, k, q, v)
+        gap, gap_rate, _, _, _, _, _, _, _ = pair_geometry(pairs, k, q, v)
         was_in_contact = latched[k] > 0.0
         new = normal.latch_approach_speed(gap, gap_rate, latched[k], pairs.approach_speed_floor[k])
         if new != latched[k]:

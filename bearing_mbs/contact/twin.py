@@ -23,7 +23,7 @@ def _body_columns(q, index):
 
 
 def pair_geometry(pairs, q, v):
-    """Gap, gap rate, slip, normal, contact point and relative spin of all pairs (arrays)."""
+    """Gap, gap rate, slip, normal, contact point, relative spin and rolling speed of all pairs (arrays)."""
     ax, ay, atheta = _body_columns(q, pairs.body_a)
     avx, avy, aomega = _body_columns(v, pairs.body_a)
     bx, by, _ = _body_columns(q, pairs.body_b)
@@ -31,6 +31,8 @@ def pair_geometry(pairs, q, v):
     px, py = kinematics.body_point(ax, ay, atheta, pairs.anchor[:, 0], pairs.anchor[:, 1])
     rb = pairs.radius_b
 
+    ra = pairs.radius_a
+    pvx, pvy = kinematics.point_velocity(avx, avy, aomega, ax, ay, px, py)
     gap, nx, ny = np.zeros_like(rb), np.zeros_like(rb), np.zeros_like(rb)
     line = pairs.kind == kinematics.PAIR_KINDS.index("circle_line")
     hollow = pairs.kind == kinematics.PAIR_KINDS.index("circle_in_circle")
@@ -38,16 +40,20 @@ def pair_geometry(pairs, q, v):
     nlx, nly = kinematics.body_vector(atheta, pairs.direction[:, 0], pairs.direction[:, 1])
     for mask, result in (
         (line, lambda m: kinematics.circle_line(bx[m], by[m], rb[m], px[m], py[m], nlx[m], nly[m])),
-        (hollow, lambda m: kinematics.circle_in_circle(bx[m], by[m], rb[m], px[m], py[m], pairs.radius_a[m])),
-        (outside, lambda m: kinematics.circle_circle(bx[m], by[m], rb[m], px[m], py[m], pairs.radius_a[m])),
+        (hollow, lambda m: kinematics.circle_in_circle(bx[m], by[m], rb[m], px[m], py[m], ra[m])),
+        (outside, lambda m: kinematics.circle_circle(bx[m], by[m], rb[m], px[m], py[m], ra[m])),
     ):
         gap[mask], nx[mask], ny[mask] = result(mask)
+    distance = np.maximum(np.where(hollow, ra - rb - gap, gap + ra + rb), 1e-300)
+    turning = kinematics.centre_line_rate(nx, ny, bvx - pvx, bvy - pvy, distance)
+    normal_rate = np.where(line, aomega, np.where(hollow, -turning, turning))
 
     cx, cy = bx - rb * nx, by - rb * ny
     vbx, vby = kinematics.point_velocity(bvx, bvy, bomega, bx, by, cx, cy)
     vax, vay = kinematics.point_velocity(avx, avy, aomega, ax, ay, cx, cy)
     gap_rate, slip = kinematics.relative_motion(nx, ny, vbx, vby, vax, vay)
-    return gap, gap_rate, slip, nx, ny, cx, cy, bomega - aomega
+    rolling = kinematics.rolling_speed(nx, ny, vbx, vby, vax, vay, bvx, bvy, rb, normal_rate)
+    return gap, gap_rate, slip, nx, ny, cx, cy, bomega - aomega, rolling
 
 
 def regularised_sign(law, speed, regularisation_speed):
@@ -68,7 +74,7 @@ def update_approach_speeds(pairs, q, v, latched):
 def scene_forces(packed, t, q, v, latched, forces, pair_out):
     """Same contract as :func:`bearing_mbs.contact.kernel.scene_forces`."""
     pairs = packed.pairs
-    gap, gap_rate, slip, nx, ny, cx, cy, spin = pair_geometry(pairs, q, v)
+    gap, gap_rate, slip, nx, ny, cx, cy, spin, rolling = pair_geometry(pairs, q, v)
     approach = normal.reference_approach_speed(latched, gap_rate, pairs.approach_speed_floor)
     fn = normal.hysteresis_force(gap, gap_rate, pairs.stiffness, pairs.exponent, pairs.damping_factor, approach)
     ft = friction.friction_force(
@@ -90,14 +96,20 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out):
     torque_a = (cx[on_a] - qb[ai, 0]) * fy[on_a] - (cy[on_a] - qb[ai, 1]) * fx[on_a] + moment[on_a]
     np.add.at(body_forces, ai, -np.column_stack([fx[on_a], fy[on_a], torque_a]))
 
+    supplied = 0.0
+    velocities = v.reshape(-1, 3)
     for j, body in enumerate(packed.load_body):
         start, count = packed.load_profile[j]
         scale = np.interp(t, packed.profile_times[start : start + count], packed.profile_values[start : start + count])
         body_forces[body] += scale * packed.load_vector[j]
+        supplied += scale * packed.load_vector[j] @ velocities[body]
     for j, body in enumerate(packed.drive_body):
         start, count = packed.drive_profile[j]
         speed = np.interp(t, packed.profile_times[start : start + count], packed.profile_values[start : start + count])
-        body_forces[body, 2] += packed.drive_gain[j] * (speed - v[3 * body + 2])
+        torque = packed.drive_gain[j] * (speed - velocities[body, 2])
+        body_forces[body, 2] += torque
+        supplied += torque * velocities[body, 2]
 
     forces[:] = body_forces.ravel()
-    pair_out[:, :N_PAIR_OUTPUTS] = np.column_stack([gap, gap_rate, slip, fn, ft, moment, loss])
+    pair_out[:, :N_PAIR_OUTPUTS] = np.column_stack([gap, gap_rate, slip, fn, ft, moment, loss, rolling])
+    return supplied, loss.sum()

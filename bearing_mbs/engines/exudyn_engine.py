@@ -4,11 +4,12 @@
   ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
 * gravity: ``LoadMassProportional`` per body, only when gravity is non-zero;
 * contacts, loads and drives: see :mod:`.exudyn_connectors`;
-* distance constraints: ``ObjectConnectorDistance`` (implicit solvers only: Exudyn's explicit solvers
-  reject joints, EXUDYN_NOTES.md §1);
-* per-pair state (latched approach speeds), events, output and run guards: a ``PostStepUserFunction``,
-  once per accepted step, calling the same compiled :func:`bearing_mbs.contact.state.advance_pair_state`
-  as the reference engine.
+* distance constraints: ``ObjectConnectorDistance``; point-on-line constraints (the constraint cage):
+  ``ObjectJointPrismatic2D`` with ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers
+  reject joints, EXUDYN_NOTES.md §1, §5);
+* per-pair state (latched approach speeds), events, output, the energy audit (trapezoid rule over accepted
+  steps) and run guards: a ``PostStepUserFunction``, once per accepted step, calling the same compiled
+  :func:`bearing_mbs.contact.state.advance_pair_state` as the reference engine.
 
 Exudyn's console output (printed through Python) is captured into ``result.metadata["exudyn_log"]``.
 """
@@ -26,7 +27,7 @@ from ..contact.kernel import N_PAIR_OUTPUTS, scene_forces
 from ..contact.state import advance_pair_state, new_events, penetration_bounds
 from ..progress import ProgressMeter
 from ..result import FAILED, SUCCESS, Result, Stats
-from ..scene import Scene
+from ..scene import DistanceConstraint, Scene
 from ..spec.fields import SpecError
 from ..spec.solver import EXUDYN_METHODS, SolverSpec
 from .exudyn_connectors import ForceConnector, add_native_contacts, check_native, without_pairs
@@ -48,9 +49,9 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
                     spec: dict | None = None) -> Result:
     import exudyn as exu
     from exudyn.itemInterface import (
-        MarkerBodyMass, MarkerBodyPosition, MarkerNodeCoordinate, NodePointGround, NodeRigidBody2D,
-        ObjectConnectorCoordinate, ObjectConnectorDistance, ObjectGenericODE2, ObjectGround, ObjectRigidBody2D,
-        LoadMassProportional,
+        LoadMassProportional, MarkerBodyMass, MarkerBodyPosition, MarkerBodyRigid, MarkerNodeCoordinate,
+        NodePointGround, NodeRigidBody2D, ObjectConnectorCoordinate, ObjectConnectorDistance, ObjectGenericODE2,
+        ObjectGround, ObjectJointPrismatic2D, ObjectRigidBody2D,
     )
 
     check_supported(scene, solver)
@@ -85,10 +86,19 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
             marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
             mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
 
+    joints = []
     for constraint in scene.constraints:
-        markers = [mbs.AddMarker(MarkerBodyPosition(bodyNumber=bodies[i], localPosition=[0, 0, 0]))
-                   for i in (constraint.body_a, constraint.body_b)]
-        mbs.AddObject(ObjectConnectorDistance(markerNumbers=markers, distance=constraint.length))
+        if isinstance(constraint, DistanceConstraint):
+            markers = [mbs.AddMarker(MarkerBodyPosition(bodyNumber=bodies[i], localPosition=[0, 0, 0]))
+                       for i in (constraint.body_a, constraint.body_b)]
+            joints.append(mbs.AddObject(ObjectConnectorDistance(markerNumbers=markers, distance=constraint.length)))
+        else:  # the centre of b on a line of a: (p_a − c_b)·n = 0 with n normal to the line, in a's frame
+            on_line = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_a],
+                                                    localPosition=[*constraint.anchor, 0]))
+            centre = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_b], localPosition=[0, 0, 0]))
+            dx, dy = constraint.direction
+            joints.append(mbs.AddObject(ObjectJointPrismatic2D(markerNumbers=[centre, on_line], axisMarker0=[1, 0, 0],
+                                                               normalMarker1=[-dy, dx, 0], constrainRotation=False)))
 
     connector = None
     native = settings.connector == "native"
@@ -102,7 +112,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         connector.evaluations = 0
         mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector))
 
-    monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress)
+    monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
+                           lambda: [_joint_force(mbs, exu, joint) for joint in joints])
     mbs.SetPostStepUserFunction(monitor)
     mbs.Assemble()
 
@@ -136,10 +147,10 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         monitor.fail(_solver_failure(scene, settings, monitor.time, _last_line(exudyn_log)))
     if monitor.message:
         monitor.record_final()
-    out_t, out_q, out_v, out_pairs = monitor.outputs()
+    out_t, out_q, out_v, out_pairs, out_work, out_constraints = monitor.outputs()
     return Result(
         engine="exudyn", method=settings.method, step=settings.step, time=out_t, position=out_q, velocity=out_v,
-        pair_output=out_pairs, events=events, body_names=tuple(b.name for b in scene.bodies),
+        pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events, body_names=tuple(b.name for b in scene.bodies),
         pair_names=tuple(p.name for p in scene.pairs), stats=stats,
         status=FAILED if monitor.message else SUCCESS, message=monitor.message, spec=spec,
         metadata={"connector": settings.connector, "exudyn_log": exudyn_log, "exudyn_version": exu.__version__},
@@ -169,6 +180,13 @@ def _simulation_settings(exu, settings, end_time):
     return s
 
 
+def _joint_force(mbs, exu, joint) -> float:
+    """Magnitude of a joint's reaction force [N]."""
+    kind = exu.OutputVariableType
+    output = kind.Force if "Distance" in mbs.GetObject(joint)["objectType"] else kind.ForceLocal
+    return float(np.linalg.norm(mbs.GetObjectOutput(joint, output)))
+
+
 def _solver_failure(scene, settings, t, detail) -> str:
     what = "Newton's method did not converge" if settings.implicit else "the solver stopped"
     hint = ""
@@ -186,23 +204,30 @@ def _last_line(text: str) -> str:
 class _StepMonitor:
     """PostStepUserFunction: per-pair state, events, output at output instants, guards, progress."""
 
-    def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress):
+    def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress,
+                 constraint_forces):
         self.scene, self.packed, self.reference = scene, packed, reference
         self.latched, self.events, self.bounds = latched, events, bounds
-        self.solver, self.progress = solver, progress
+        self.solver, self.progress, self.constraint_forces = solver, progress, constraint_forces
         self.output_times = output_grid(end_time, solver.output_interval)
         self.margin = 1e-3 * solver.exudyn.step
         self.rows: list[tuple] = []
         self.message, self.time = "", 0.0
         self.q, self.v = reference.copy(), np.array([b.velocity for b in scene.bodies], dtype=float).ravel()
         self._forces = np.empty(reference.size)
+        self._pairs = np.empty((len(latched), N_PAIR_OUTPUTS))
+        self.work = np.zeros(2)  # supplied, dissipated [J]
+        self._power = np.array(self._evaluate(0.0))
         self._progress_every, self._calls = max(1, int(end_time / solver.exudyn.step / 200)), 0
-        self._record(0.0)
+        self._record(0.0, [0.0] * len(scene.constraints))
 
-    def _record(self, t):
-        pair_out = np.empty((len(self.latched), N_PAIR_OUTPUTS))
-        scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, pair_out)
-        self.rows.append((t, self.q.copy(), self.v.copy(), pair_out))
+    def _evaluate(self, t):
+        return scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, self._pairs)
+
+    def _record(self, t, constraint_forces=None):
+        self._evaluate(t)
+        forces = self.constraint_forces() if constraint_forces is None else constraint_forces
+        self.rows.append((t, self.q.copy(), self.v.copy(), self._pairs.copy(), self.work.copy(), np.array(forces)))
 
     def __call__(self, mbs, t):
         data = mbs.systemData
@@ -215,7 +240,11 @@ class _StepMonitor:
             coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
             return self.fail(diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
                                               step, blown_up=finite.all()))
+        h = t - self.time
         self.q, self.v, self.time = q, v, t
+        power = np.array(self._evaluate(t))  # before the latch update: the forces of the step just taken
+        self.work += 0.5 * h * (self._power + power)
+        self._power = power
         _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
             return self.fail(penetration_message(self.scene, self.solver, t, worst, q, v, step))
@@ -235,5 +264,5 @@ class _StepMonitor:
             self._record(self.time)
 
     def outputs(self):
-        return (np.array([r[0] for r in self.rows]), np.array([r[1] for r in self.rows]),
-                np.array([r[2] for r in self.rows]), np.array([r[3] for r in self.rows]))
+        """time, position, velocity, pair outputs, work, constraint forces, as arrays."""
+        return tuple(np.array([row[i] for row in self.rows]) for i in range(6))

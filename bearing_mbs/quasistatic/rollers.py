@@ -143,7 +143,9 @@ class RollerSet:
 
     def cage_speed(self, shaft_speed: float) -> float:
         r"""Epicyclic cage speed :math:`\omega_c = \tfrac12\omega_i(1 - D_w/D_{pw})` [rad/s], outer ring fixed."""
-        return 0.5 * shaft_speed * (1.0 - self.roller_diameter / self.pitch_diameter)
+        from ..geometry import epicyclic_cage_speed
+
+        return epicyclic_cage_speed(shaft_speed, self.roller_diameter, self.pitch_diameter)
 
     def centrifugal_force(self, shaft_speed: float) -> float:
         r"""Roller centrifugal force :math:`F_c = m_r(D_{pw}/2)\,\omega_c^2` [N] at inner-ring speed [rad/s]."""

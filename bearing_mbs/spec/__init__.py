@@ -6,21 +6,39 @@ Every field documents its unit and valid range; construction raises :class:`Spec
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from .balls import BallSpec, BoxSpec, ConstraintSpec
+from .bearing import PRESETS, AnalysisSpec, BearingSpec, CageSpec, DriveSpec, GearTrainSpec, LoadSpec, MaterialSpec
 from .contact import ContactSpec
 from .fields import SpecError, non_negative, one_of, positive, require
 from .loading import apply_override, from_mapping, parse_override, read_toml, to_mapping
 from .solver import ExudynSolver, ReferenceSolver, SolverSpec
 
-MODELS = ("balls",)
+MODELS = ("balls", "bearing")
+
+#: Sections each model reads; a section of another model is an error.
+MODEL_SECTIONS = {
+    "balls": ("balls", "box", "constraints"),
+    "bearing": ("bearing", "cage", "drive", "load", "analysis"),
+}
+
+#: Contact groups of each model with their defaults; a partial ``[contact.<group>]`` table is merged over them.
+_BEARING_CONTACT = ContactSpec(normal_law="lankarani_nikravesh", stiffness_model="palmgren", restitution=0.9,
+                               approach_speed_floor=0.1, friction_law="erf", friction_coefficient=0.1,
+                               regularisation_speed=0.01)
+CONTACT_GROUPS = {
+    "balls": {"wall": ContactSpec(), "ball": ContactSpec()},
+    "bearing": {"inner_race": _BEARING_CONTACT, "outer_race": _BEARING_CONTACT, "pocket": _BEARING_CONTACT,
+                "land": _BEARING_CONTACT, "roller": _BEARING_CONTACT},
+}
 
 
 @dataclass(frozen=True)
 class Scenario:
-    """``[scenario]``: name; model (``balls``); end_time [s] > 0; gravity [m/s²] >= 0, acting along −y;
+    """``[scenario]``: name; model (``balls`` or ``bearing``); end_time [s] > 0; gravity [m/s²] >= 0, acting along −y;
     description: free text."""
 
     name: str
@@ -37,11 +55,20 @@ class Scenario:
 
 @dataclass(frozen=True)
 class ContactGroups:
-    """``[contact]``: one :class:`ContactSpec` per group of pairs. balls model: ``wall`` (ball–floor and
-    ball–wall) and ``ball`` (ball–ball)."""
+    """``[contact]``: one :class:`ContactSpec` per group of pairs (:data:`CONTACT_GROUPS`).
 
-    wall: ContactSpec = field(default_factory=ContactSpec)
-    ball: ContactSpec = field(default_factory=ContactSpec)
+    balls model: ``wall`` (ball–floor and ball–wall) and ``ball`` (ball–ball). bearing model:
+    ``inner_race``, ``outer_race``, ``pocket`` (roller–cage), ``land`` (cage–ring land) and ``roller``
+    (roller–roller). Loading fills every group of the model, merging a partial table over its default.
+    """
+
+    wall: ContactSpec | None = None
+    ball: ContactSpec | None = None
+    inner_race: ContactSpec | None = None
+    outer_race: ContactSpec | None = None
+    pocket: ContactSpec | None = None
+    land: ContactSpec | None = None
+    roller: ContactSpec | None = None
 
 
 @dataclass(frozen=True)
@@ -54,8 +81,22 @@ class Spec:
     balls: tuple[BallSpec, ...] = ()
     box: BoxSpec | None = None
     constraints: tuple[ConstraintSpec, ...] = ()
+    bearing: BearingSpec | None = None
+    cage: CageSpec | None = None
+    drive: DriveSpec | None = None
+    load: LoadSpec | None = None
+    analysis: AnalysisSpec | None = None
 
     def __post_init__(self):
+        if self.scenario.model == "bearing":
+            require(self.bearing is not None, "bearing", None, "the bearing model needs a [bearing] section")
+            for name, default in (("cage", CageSpec), ("drive", DriveSpec), ("load", LoadSpec),
+                                  ("analysis", AnalysisSpec)):
+                if getattr(self, name) is None:
+                    object.__setattr__(self, name, default())
+            if self.analysis.start is not None:
+                require(self.analysis.start < self.scenario.end_time, "analysis.start", self.analysis.start,
+                        "must be before scenario.end_time")
         if self.scenario.model == "balls":
             require(len(self.balls) > 0, "balls", [], "the balls model needs at least one [[balls]] entry")
             for i, constraint in enumerate(self.constraints):
@@ -74,15 +115,59 @@ def load_spec(path: str | Path, overrides: list[str] = ()) -> Spec:
     for text in overrides:
         keys, value = parse_override(text)
         apply_override(data, keys, value)
-    return from_mapping(Spec, data)
+    return spec_from_mapping(data)
 
 
 def spec_from_mapping(data: dict) -> Spec:
-    return from_mapping(Spec, data)
+    """Validate a raw mapping (as read from TOML) into a :class:`Spec`."""
+    return from_mapping(Spec, with_model_defaults(data))
+
+
+def with_model_defaults(data: dict) -> dict:
+    """Fill what depends on the model before validation: reject sections and contact groups of other
+    models, merge each contact group over its default, and put a bearing preset under ``[bearing]``."""
+    data = copy.deepcopy(data)
+    model = data.get("scenario", {}).get("model") if isinstance(data.get("scenario"), dict) else None
+    if model not in MODELS:
+        return data  # the loader reports the bad model
+    for other, sections in MODEL_SECTIONS.items():
+        for section in sections:
+            if other != model and section in data:
+                raise SpecError(section, "...", f"is a section of the {other} model, not of model {model!r}")
+    contact = data.setdefault("contact", {})
+    if isinstance(contact, dict):
+        groups = CONTACT_GROUPS[model]
+        for group, table in contact.items():
+            if group not in groups:
+                raise SpecError(f"contact.{group}", table, f"is not a contact group of model {model!r}; "
+                                f"groups: {', '.join(groups)}")
+            if not isinstance(table, dict):
+                raise SpecError(f"contact.{group}", table, "must be a table")
+        for group, default in groups.items():
+            contact[group] = {**to_mapping(default), **contact.get(group, {})}
+    bearing = data.get("bearing")
+    if isinstance(bearing, dict) and bearing.get("preset"):
+        name = bearing["preset"]
+        if name not in PRESETS:
+            raise SpecError("bearing.preset", name, f"must be one of {', '.join(PRESETS)}")
+        given = set(bearing)
+        if given & {"pitch_diameter", "diametral_clearance"}:  # the user chose the other raceway description
+            bearing.update({k: v for k, v in PRESETS[name].items()
+                            if k not in given and k not in ("inner_race_diameter", "outer_race_diameter")})
+        else:
+            bearing.update({k: v for k, v in PRESETS[name].items() if k not in given})
+    return data
 
 
 __all__ = [
+    "AnalysisSpec",
     "BallSpec",
+    "BearingSpec",
+    "CageSpec",
+    "DriveSpec",
+    "GearTrainSpec",
+    "LoadSpec",
+    "MaterialSpec",
     "BoxSpec",
     "ConstraintSpec",
     "ContactGroups",
@@ -95,5 +180,6 @@ __all__ = [
     "SpecError",
     "load_spec",
     "spec_from_mapping",
+    "with_model_defaults",
     "to_mapping",
 ]

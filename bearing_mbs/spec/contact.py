@@ -8,12 +8,17 @@ from ..contact.friction import FRICTION_LAWS
 from ..contact.normal import NORMAL_LAWS
 from .fields import SpecError, in_range, non_negative, one_of, positive
 
+STIFFNESS_MODELS = ("given", "palmgren", "document")
+
 
 @dataclass(frozen=True)
 class ContactSpec:
     """Normal law, friction law and rolling resistance of a group of contact pairs.
 
     normal_law: one of ``power``, ``lankarani_nikravesh``, ``hunt_crossley``, ``flores``, ``gonthier``.
+    stiffness_model: ``given`` (use stiffness and exponent), ``palmgren`` (line contact of the bearing's
+    contact length, n = 10/9, scaled by the pair's effective modulus) or ``document`` (the primary document's
+    K δ^1.3 with K = 3e10 inner, 4e10 outer; raceways only). Only ``given`` applies to the balls model.
     stiffness: K [N/m^n] > 0. exponent: n [-] in [1, 3] (1.5 Hertz point contact, 10/9 Palmgren line
     contact). restitution: e in (0, 1], mapped to damping by the law (ignored by ``power``).
     approach_speed_floor [m/s] > 0: lower bound of the latched approach speed (see
@@ -23,6 +28,7 @@ class ContactSpec:
     """
 
     normal_law: str = "lankarani_nikravesh"
+    stiffness_model: str = "given"
     stiffness: float = 6e6
     exponent: float = 1.5
     restitution: float = 0.9
@@ -34,6 +40,7 @@ class ContactSpec:
 
     def __post_init__(self):
         one_of("normal_law", self.normal_law, NORMAL_LAWS)
+        one_of("stiffness_model", self.stiffness_model, STIFFNESS_MODELS)
         positive("stiffness", self.stiffness)
         in_range("exponent", self.exponent, 1.0, 3.0)
         in_range("restitution", self.restitution, 0.0, 1.0, low_open=True)

@@ -5,14 +5,20 @@ For constraints :math:`g(q) = 0` with Jacobian :math:`G`, the integrators use ac
 each accepted step they project (mass-weighted) back onto the constraint manifold:
 
 * positions (SHAKE-type, Newton iterations): :math:`q \leftarrow q - M^{-1}G^T(GM^{-1}G^T)^{-1}g(q)`
-  until :math:`|g| \le 10^{-14}\,L^2`;
+  until :math:`|g| \le 10^{-14}` × the constraints' length scale;
 * velocities (RATTLE-type): :math:`v \leftarrow v - M^{-1}G^T(GM^{-1}G^T)^{-1}Gv`.
 
-Distance constraint between centres a and b: :math:`g = \tfrac12(|c_b - c_a|^2 - L^2)`,
-:math:`\partial g/\partial c_b = -\partial g/\partial c_a = d = c_b - c_a`,
-:math:`\dot G\dot q = |\dot d|^2`.
+Both kinds are written in metres. With :math:`w = c_b - c_a`, :math:`u = \dot w`, :math:`\omega = \dot\theta_a`:
 
-Fixed coordinates have zero inverse mass, so neither forces nor projections move them.
+* distance L: :math:`g = (|w|^2 - L^2)/(2L)`, :math:`\partial g/\partial c_b = -\partial g/\partial c_a = w/L`,
+  :math:`\dot G\dot q = |u|^2/L`;
+* point on a line of body a (point p, unit direction d, both turning with a):
+  :math:`g = d \times (c_b - p)`, :math:`\partial g/\partial c_b = -\partial g/\partial c_a = (-d_y, d_x)`,
+  :math:`\partial g/\partial\theta_a = -d\cdot w`,
+  :math:`\dot G\dot q = -2\omega\, d\cdot u - \omega^2\, d^\perp\cdot w` with :math:`d^\perp = (-d_y, d_x)`.
+
+The tests check G and Ġq̇ against finite differences. Fixed coordinates have zero inverse mass, so neither
+forces nor projections move them.
 """
 
 from __future__ import annotations
@@ -20,64 +26,95 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from ...contact import kinematics
+
 PROJECTION_TOLERANCE = 1e-14
 MAX_PROJECTION_ITERATIONS = 20
+_DISTANCE, _POINT_ON_LINE = 0, 1
 
 
 @numba.njit(cache=True)
 def constraint_rows(constraints, q, v, residual, jacobian, gamma):
-    """Residuals g, Jacobian G (C × n, overwritten) and γ = −Ġq̇ of all constraints."""
+    """Residuals g [m], Jacobian G (C × n, overwritten) and γ = −Ġq̇ of all constraints."""
     jacobian[:, :] = 0.0
-    for k in range(constraints.body_a.size):
+    for k in range(constraints.kind.size):
         a, b = constraints.body_a[k], constraints.body_b[k]
-        dx, dy = q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1]
-        dvx, dvy = v[3 * b] - v[3 * a], v[3 * b + 1] - v[3 * a + 1]
-        residual[k] = 0.5 * (dx * dx + dy * dy - constraints.length[k] ** 2)
-        jacobian[k, 3 * b] = dx
-        jacobian[k, 3 * b + 1] = dy
-        jacobian[k, 3 * a] = -dx
-        jacobian[k, 3 * a + 1] = -dy
-        gamma[k] = -(dvx * dvx + dvy * dvy)
+        wx, wy = q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1]
+        ux, uy = v[3 * b] - v[3 * a], v[3 * b + 1] - v[3 * a + 1]
+        if constraints.kind[k] == _DISTANCE:
+            length = constraints.length[k]
+            residual[k] = (wx * wx + wy * wy - length * length) / (2 * length)
+            gx, gy = wx / length, wy / length
+            gamma[k] = -(ux * ux + uy * uy) / length
+        else:
+            theta, omega = q[3 * a + 2], v[3 * a + 2]
+            px, py = kinematics.body_point(q[3 * a], q[3 * a + 1], theta, constraints.anchor[k, 0],
+                                           constraints.anchor[k, 1])
+            dx, dy = kinematics.body_vector(theta, constraints.direction[k, 0], constraints.direction[k, 1])
+            residual[k] = dx * (q[3 * b + 1] - py) - dy * (q[3 * b] - px)
+            gx, gy = -dy, dx
+            jacobian[k, 3 * a + 2] = -(dx * wx + dy * wy)
+            gamma[k] = 2 * omega * (dx * ux + dy * uy) + omega * omega * (-dy * wx + dx * wy)
+        jacobian[k, 3 * b] = gx
+        jacobian[k, 3 * b + 1] = gy
+        jacobian[k, 3 * a] = -gx
+        jacobian[k, 3 * a + 1] = -gy
 
 
 @numba.njit(cache=True)
-def _multiplier_correction(inverse_mass, jacobian, right_hand_side):
-    """M⁻¹Gᵀ(GM⁻¹Gᵀ)⁻¹ r: the mass-weighted correction that changes G·x by r."""
-    weighted = jacobian * inverse_mass  # G M⁻¹ (row-scaled columns)
+def _solve_multipliers(inverse_mass, jacobian, right_hand_side):
+    """λ with (G M⁻¹ Gᵀ) λ = r, and the correction M⁻¹ Gᵀ λ that changes G·x by r."""
+    weighted = jacobian * inverse_mass  # G M⁻¹
     multipliers = np.linalg.solve(weighted @ jacobian.T, right_hand_side)
-    return weighted.T @ multipliers
+    return multipliers, weighted.T @ multipliers
 
 
 @numba.njit(cache=True)
 def add_constraint_accelerations(constraints, inverse_mass, q, v, a):
-    """Make the accelerations ``a`` consistent with the constraints (index-1 form), in place."""
-    c = constraints.body_a.size
+    """Make the accelerations ``a`` consistent with the constraints (index-1 form), in place; returns the
+    magnitude of each constraint force on its body b [N]."""
+    c = constraints.kind.size
     residual, gamma = np.empty(c), np.empty(c)
     jacobian = np.empty((c, q.size))
     constraint_rows(constraints, q, v, residual, jacobian, gamma)
-    a += _multiplier_correction(inverse_mass, jacobian, gamma - jacobian @ a)
+    multipliers, correction = _solve_multipliers(inverse_mass, jacobian, gamma - jacobian @ a)
+    a += correction
+    forces = np.empty(c)
+    for k in range(c):
+        b = constraints.body_b[k]
+        forces[k] = abs(multipliers[k]) * np.hypot(jacobian[k, 3 * b], jacobian[k, 3 * b + 1])
+    return forces
 
 
 @numba.njit(cache=True)
-def project_positions(constraints, inverse_mass, q):
-    """SHAKE-type Newton projection of q onto g(q) = 0; returns the final max |g| [m²]."""
-    c = constraints.body_a.size
+def length_scale(constraints, q):
+    """A length [m] for the projection tolerance: the largest constraint length or body distance."""
+    scale = 0.0
+    for k in range(constraints.kind.size):
+        a, b = constraints.body_a[k], constraints.body_b[k]
+        scale = max(scale, constraints.length[k], np.hypot(q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1]))
+    return scale
+
+
+@numba.njit(cache=True)
+def project_positions(constraints, inverse_mass, q, scale):
+    """SHAKE-type Newton projection of q onto g(q) = 0; returns the final max |g| [m]."""
+    c = constraints.kind.size
     residual, gamma = np.empty(c), np.empty(c)
     jacobian = np.empty((c, q.size))
-    scale = np.max(constraints.length) ** 2
     for _ in range(MAX_PROJECTION_ITERATIONS):
         constraint_rows(constraints, q, q, residual, jacobian, gamma)
         if np.max(np.abs(residual)) <= PROJECTION_TOLERANCE * scale:
             break
-        q -= _multiplier_correction(inverse_mass, jacobian, residual)
+        q -= _solve_multipliers(inverse_mass, jacobian, residual)[1]
     return np.max(np.abs(residual))
 
 
 @numba.njit(cache=True)
 def project_velocities(constraints, inverse_mass, q, v):
     """RATTLE-type projection of v onto G v = 0, in place."""
-    c = constraints.body_a.size
+    c = constraints.kind.size
     residual, gamma = np.empty(c), np.empty(c)
     jacobian = np.empty((c, q.size))
     constraint_rows(constraints, q, v, residual, jacobian, gamma)
-    v -= _multiplier_correction(inverse_mass, jacobian, jacobian @ v)
+    v -= _solve_multipliers(inverse_mass, jacobian, jacobian @ v)[1]

@@ -40,9 +40,13 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     bounds = penetration_bounds(packed.pairs, solver.penetration_limit)
 
     times = output_grid(end_time, solver.output_interval)
+    constraint_count = len(scene.constraints)
     out_t = np.full(times.size, np.nan)
     out_q, out_v = np.full((times.size, n), np.nan), np.full((times.size, n), np.nan)
     out_pairs = np.full((times.size, pair_count, N_PAIR_OUTPUTS), np.nan)
+    out_work = np.full((times.size, 2), np.nan)
+    out_constraints = np.full((times.size, constraint_count), np.nan)
+    work = np.zeros(2)
     counters = np.zeros(3, dtype=np.int64)
 
     method = ig.METHOD_CODES[settings.method]
@@ -51,17 +55,22 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     contact_step = settings.contact_step or 0.0
 
     def run(t, t_stop, h_adaptive, index):
-        return ig.integrate(method, packed, *tab, q, v, latched, events, bounds, solver.speed_limit, t, t_stop, settings.step,
-                            contact_step, settings.tolerance, h_adaptive, times, index, out_t, out_q, out_v,
-                            out_pairs, counters)
+        return ig.integrate(method, packed, *tab, q, v, latched, events, work, bounds, solver.speed_limit, t, t_stop,
+                            settings.step, contact_step, settings.tolerance, h_adaptive, times, index, out_t, out_q,
+                            out_v, out_pairs, out_work, out_constraints, counters)
 
     run(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
 
-    forces, pair_out = np.empty(n), np.empty((pair_count, N_PAIR_OUTPUTS))
-    scene_forces(packed, 0.0, q, v, latched, forces, pair_out)
-    out_t[0], out_q[0], out_v[0], out_pairs[0] = 0.0, q, v, pair_out
+    def record(index, t):
+        """The state at t as output row ``index`` (initial state, or the state where a run stopped)."""
+        acc, forces = np.empty(n), np.empty(n)
+        pair_out, constraint_forces = np.empty((pair_count, N_PAIR_OUTPUTS)), np.empty(constraint_count)
+        ig.accelerations(packed, t, q, v, latched, acc, forces, pair_out, constraint_forces)
+        return t, q.copy(), v.copy(), pair_out, work.copy(), constraint_forces, acc
+
+    out_t[0], out_q[0], out_v[0], out_pairs[0], out_work[0], out_constraints[0], initial_acceleration = record(0, 0.0)
     if method == ig.CENTRAL_DIFFERENCE:
-        _backward_difference_start(packed, q, v, latched, settings, times)
+        _backward_difference_start(v, initial_acceleration, settings, times)
 
     progress.start(end_time, f"{scene.name} (reference {settings.method})")
     t, h_adaptive, index, status, culprit = 0.0, settings.step, 1, ig.RUNNING, -1
@@ -78,29 +87,28 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
 
     stats = Stats(steps=int(counters[ig.STEPS]), rejected_steps=int(counters[ig.REJECTED]),
                   force_evaluations=int(counters[ig.EVALUATIONS]), wall_time_s=wall)
+    series = [out_t, out_q, out_v, out_pairs, out_work, out_constraints]
     message = ""
     if status != ig.RUNNING:
         message = _failure_message(scene, solver, status, culprit, t, q, v, latched, h_adaptive)
-        scene_forces(packed, t, q, v, latched, forces, pair_out)  # keep the state where the run stopped
-        out_t, out_q, out_v, out_pairs = (np.concatenate([a[:index], np.asarray(b)[None]]) for a, b in
-                                          ((out_t, t), (out_q, q), (out_v, v), (out_pairs, pair_out)))
+        final = record(index, t)[:6]  # keep the state where the run stopped
+        series = [np.concatenate([a[:index], np.asarray(b)[None]]) for a, b in zip(series, final)]
+    out_t, out_q, out_v, out_pairs, out_work, out_constraints = series
     return Result(
         engine="reference", method=settings.method, step=settings.step, time=out_t, position=out_q,
-        velocity=out_v, pair_output=out_pairs, events=events,
+        velocity=out_v, pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events,
         body_names=tuple(b.name for b in scene.bodies), pair_names=tuple(p.name for p in scene.pairs),
         stats=stats, status=SUCCESS if status == ig.RUNNING else FAILED, message=message, spec=spec,
     )
 
 
-def _backward_difference_start(packed, q, v, latched, settings, times):
+def _backward_difference_start(v, acceleration, settings, times):
     """Second-order start of the central difference: the backward velocity v₀ − h₀a₀/2 (Taylor), which
     makes the scheme exact for constant acceleration. The document's start (v₀ itself) costs an O(h)
     error even in free fall."""
     first = times[1] - times[0]
-    h0 = first / np.ceil(first / settings.step * (1 - 1e-12))
-    acc = np.empty_like(q)
-    ig.accelerations(packed, 0.0, q, v, latched, acc, np.empty_like(q), np.empty((len(latched), N_PAIR_OUTPUTS)))
-    v -= 0.5 * h0 * acc
+    h0 = first / np.ceil(first / settings.step * (1 - 1e-9))
+    v -= 0.5 * h0 * acceleration
 
 
 def _failure_message(scene, solver, status, culprit, t, q, v, latched, h) -> str:

@@ -20,6 +20,10 @@ Methods
 ``rk4``, ``dopri5``
     Explicit Runge–Kutta on (q, v) with the tableaus of :mod:`.tableaus`; ``dopri5`` adapts its step with
     the embedded 4th-order estimate (RMS norm, relative and absolute tolerance both ``tolerance``).
+
+Energy audit: the work supplied by loads and drives and the work dissipated by the contacts are integrated
+with each method's own quadrature (the RK weights over the stages, the trapezoid rule for velocity Verlet,
+the rectangle rule for the central difference), so the audit is as accurate as the motion.
 """
 
 from __future__ import annotations
@@ -31,7 +35,7 @@ import numpy as np
 
 from ...contact.kernel import scene_forces
 from ...contact.state import advance_pair_state
-from .constraints import add_constraint_accelerations, project_positions, project_velocities
+from .constraints import add_constraint_accelerations, length_scale, project_positions, project_velocities
 
 CENTRAL_DIFFERENCE, VELOCITY_VERLET, RUNGE_KUTTA = 0, 1, 2
 METHOD_CODES = {"central_difference": CENTRAL_DIFFERENCE, "velocity_verlet": VELOCITY_VERLET,
@@ -44,20 +48,22 @@ STEPS, REJECTED, EVALUATIONS = 0, 1, 2
 
 
 @numba.njit(cache=True, inline="always")
-def accelerations(packed, t, q, v, latched, a, forces, pair_out):
-    """a = M⁻¹ f(t, q, v) + gravity, made consistent with the constraints."""
-    scene_forces(packed, t, q, v, latched, forces, pair_out)
+def accelerations(packed, t, q, v, latched, a, forces, pair_out, constraint_forces):
+    """a = M⁻¹ f(t, q, v) + gravity, made consistent with the constraints (their forces [N] into
+    ``constraint_forces``). Returns (supplied, dissipated) power [W]."""
+    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, pair_out)
     for i in range(q.size):
         a[i] = packed.inverse_mass[i] * forces[i] + packed.gravity[i]
-    if packed.constraints.body_a.size > 0:
-        add_constraint_accelerations(packed.constraints, packed.inverse_mass, q, v, a)
+    if packed.constraints.kind.size > 0:
+        constraint_forces[:] = add_constraint_accelerations(packed.constraints, packed.inverse_mass, q, v, a)
+    return supplied, dissipated
 
 
 @numba.njit(cache=True)
-def _rk_step(packed, tab_a, tab_b, tab_c, t, h, q, v, latched, kq, kv, first_ready,
-             q_new, v_new, stage_q, stage_v, forces, pair_out, counters):
-    """One explicit RK step on (q, v): stages into kq (velocities) and kv (accelerations), result into
-    q_new, v_new. With ``first_ready`` the first stage f(t, q, v) is already in kq[0], kv[0]."""
+def _rk_step(packed, tab_a, tab_b, tab_c, t, h, q, v, latched, kq, kv, kp, first_ready,
+             q_new, v_new, stage_q, stage_v, forces, pair_out, constraint_forces, counters):
+    """One explicit RK step on (q, v): stages into kq (velocities), kv (accelerations) and kp (powers),
+    result into q_new, v_new. With ``first_ready`` the first stage f(t, q, v) is already in place."""
     stages, n = tab_b.size, q.size
     for i in range(stages):
         if i == 0 and first_ready:
@@ -69,7 +75,8 @@ def _rk_step(packed, tab_a, tab_b, tab_c, t, h, q, v, latched, kq, kv, first_rea
                 velocity += h * tab_a[i, j] * kv[j, m]
             stage_q[m], stage_v[m] = position, velocity
             kq[i, m] = velocity
-        accelerations(packed, t + tab_c[i] * h, stage_q, stage_v, latched, kv[i], forces, pair_out)
+        kp[i, 0], kp[i, 1] = accelerations(packed, t + tab_c[i] * h, stage_q, stage_v, latched, kv[i], forces,
+                                           pair_out, constraint_forces)
         counters[EVALUATIONS] += 1
     for m in range(n):
         position, velocity = q[m], v[m]
@@ -98,25 +105,31 @@ def _error_norm(tab_b, tab_e, h, q, v, q_new, v_new, kq, kv, tolerance):
 
 @numba.njit(cache=True)
 def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
-              q, v, latched, events, penetration_bound, speed_limit, t, t_stop, step, contact_step, tolerance, h_adaptive,
-              output_times, output_index, out_t, out_q, out_v, out_pairs, counters):
+              q, v, latched, events, work, penetration_bound, speed_limit, t, t_stop, step, contact_step,
+              tolerance, h_adaptive, output_times, output_index, out_t, out_q, out_v, out_pairs, out_work,
+              out_constraints, counters):
     """Advance from t to t_stop (an output time), writing outputs on the way.
 
-    Returns (t, h_adaptive, output_index, status, culprit): ``culprit`` is the offending pair (penetration)
-    or coordinate (non-finite state, blow-up), −1 otherwise. On a stop, q and v hold the last good state.
+    ``work`` holds the cumulative (supplied, dissipated) work [J]. Returns (t, h_adaptive, output_index, status,
+    culprit): ``culprit`` is the offending pair (penetration) or coordinate (non-finite state, blow-up), −1
+    otherwise. On a stop, q and v hold the last good state.
     """
     n = q.size
     adaptive = tab_e.size > 0
     stages = tab_b.size
     kq = np.zeros((max(stages, 1), n))
     kv = np.zeros((max(stages, 1), n))
+    kp = np.zeros((max(stages, 1), 2))
     q_new, v_new = np.empty(n), np.empty(n)
     stage_q, stage_v = np.empty(n), np.empty(n)
     forces = np.empty(n)
     pair_out = np.empty(out_pairs.shape[1:])
+    constraint_forces = np.empty(out_constraints.shape[1])
     acc = np.empty(n)
-    first_ready = False  # kq[0], kv[0] (RK) or acc (velocity Verlet) hold f at the current state
-    has_constraints = packed.constraints.body_a.size > 0
+    power = np.zeros(2)  # velocity Verlet: (supplied, dissipated) at the current state
+    first_ready = False  # kq[0], kv[0], kp[0] (RK) or acc, power (velocity Verlet) hold f at the current state
+    has_constraints = packed.constraints.kind.size > 0
+    scale = length_scale(packed.constraints, q) if has_constraints else 1.0
 
     while output_index < output_times.size and output_times[output_index] <= t_stop * (1 + 1e-15):
         t_target = output_times[output_index]
@@ -136,26 +149,33 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
                 landing = steps_left == 1
 
             if method == CENTRAL_DIFFERENCE:
-                accelerations(packed, t, q, v, latched, acc, forces, pair_out)
+                supplied, dissipated = accelerations(packed, t, q, v, latched, acc, forces, pair_out,
+                                                     constraint_forces)
                 counters[EVALUATIONS] += 1
                 for i in range(n):
                     q_new[i] = q[i] + h * v[i] + h * h * acc[i]
+                step_work_supplied, step_work_dissipated = h * supplied, h * dissipated
             elif method == VELOCITY_VERLET:
                 if not first_ready:
-                    accelerations(packed, t, q, v, latched, acc, forces, pair_out)
+                    power[0], power[1] = accelerations(packed, t, q, v, latched, acc, forces, pair_out,
+                                                       constraint_forces)
                     counters[EVALUATIONS] += 1
                 for i in range(n):
                     v_new[i] = v[i] + 0.5 * h * acc[i]  # half kick
                     q_new[i] = q[i] + h * v_new[i]  # drift
                     stage_v[i] = v_new[i] + 0.5 * h * acc[i]  # predicted end velocity
-                accelerations(packed, t + h, q_new, stage_v, latched, acc, forces, pair_out)
+                supplied, dissipated = accelerations(packed, t + h, q_new, stage_v, latched, acc, forces, pair_out,
+                                                     constraint_forces)
                 counters[EVALUATIONS] += 1
                 for i in range(n):
                     v_new[i] += 0.5 * h * acc[i]
+                step_work_supplied = 0.5 * h * (power[0] + supplied)
+                step_work_dissipated = 0.5 * h * (power[1] + dissipated)
+                power[0], power[1] = supplied, dissipated
                 first_ready = True
             else:
-                _rk_step(packed, tab_a, tab_b, tab_c, t, h, q, v, latched, kq, kv, first_ready,
-                         q_new, v_new, stage_q, stage_v, forces, pair_out, counters)
+                _rk_step(packed, tab_a, tab_b, tab_c, t, h, q, v, latched, kq, kv, kp, first_ready,
+                         q_new, v_new, stage_q, stage_v, forces, pair_out, constraint_forces, counters)
                 first_ready = True  # the first stage depends on the state only, not on h
                 if adaptive:
                     error = _error_norm(tab_b, tab_e, h, q, v, q_new, v_new, kq, kv, tolerance)
@@ -168,11 +188,15 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
                         continue
                     proposal = max(h * factor, h_adaptive) if landing else h * factor
                     h_adaptive = min(proposal, step)
+                step_work_supplied = step_work_dissipated = 0.0
+                for i in range(stages):
+                    step_work_supplied += h * tab_b[i] * kp[i, 0]
+                    step_work_dissipated += h * tab_b[i] * kp[i, 1]
                 first_ready = fsal  # after acceptance, only an FSAL last stage is f at the new state
 
             if has_constraints:
-                violation = project_positions(packed.constraints, packed.inverse_mass, q_new)
-                if not violation <= 1e-10 * np.max(packed.constraints.length) ** 2:
+                violation = project_positions(packed.constraints, packed.inverse_mass, q_new, scale)
+                if not violation <= 1e-10 * scale:
                     return t, h_adaptive, output_index, PROJECTION_FAILED, -1
                 if method != CENTRAL_DIFFERENCE:  # its velocity is the backward difference below
                     project_velocities(packed.constraints, packed.inverse_mass, q_new, v_new)
@@ -189,6 +213,8 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
                     return t, h_adaptive, output_index, BLOWUP, 3 * body
             q[:] = q_new
             v[:] = v_new
+            work[0] += step_work_supplied
+            work[1] += step_work_dissipated
             if adaptive:
                 t = t_target if landing else t + h
             else:
@@ -204,11 +230,14 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
             if method == RUNGE_KUTTA and first_ready:
                 kq[0, :] = kq[stages - 1]
                 kv[0, :] = kv[stages - 1]
+                kp[0, :] = kp[stages - 1]
 
         out_t[output_index] = t
         out_q[output_index] = q
         out_v[output_index] = v
-        scene_forces(packed, t, q, v, latched, forces, pair_out)
+        accelerations(packed, t, q, v, latched, acc, forces, pair_out, constraint_forces)
         out_pairs[output_index] = pair_out
+        out_work[output_index] = work
+        out_constraints[output_index] = constraint_forces
         output_index += 1
     return t, h_adaptive, output_index, RUNNING, -1
