@@ -28,17 +28,22 @@ _TINY = 1e-300
 
 
 @register_jitable
+def rotate(cos_theta, sin_theta, local_x, local_y):
+    """World components of a vector (local_x, local_y) of a body turned by θ, given cos θ and sin θ."""
+    return cos_theta * local_x - sin_theta * local_y, sin_theta * local_x + cos_theta * local_y
+
+
+@register_jitable
 def body_point(x, y, theta, local_x, local_y):
     """World position of a point fixed at (local_x, local_y) [m] in a body at (x, y, theta)."""
-    c, s = np.cos(theta), np.sin(theta)
-    return x + c * local_x - s * local_y, y + s * local_x + c * local_y
+    rx, ry = rotate(np.cos(theta), np.sin(theta), local_x, local_y)
+    return x + rx, y + ry
 
 
 @register_jitable
 def body_vector(theta, local_x, local_y):
     """World components of a vector fixed in a body rotated by theta [rad]."""
-    c, s = np.cos(theta), np.sin(theta)
-    return c * local_x - s * local_y, s * local_x + c * local_y
+    return rotate(np.cos(theta), np.sin(theta), local_x, local_y)
 
 
 @register_jitable

@@ -69,6 +69,8 @@ def hysteresis_force(gap, gap_rate, stiffness, exponent, damping_factor, approac
 
     .. math:: F_N = \max\left(0,\; K\delta^n\left(1 - d\,\dot g/\dot\delta^-\right)\right)
 
+    the elastic force (:func:`elastic_force`) times the hysteresis factor (:func:`hysteresis_factor`).
+
     Parameters
     ----------
     gap, gap_rate : gap [m] and its rate [m/s]; contact where ``gap < 0``.
@@ -78,8 +80,14 @@ def hysteresis_force(gap, gap_rate, stiffness, exponent, damping_factor, approac
     approach_speed : reference approach speed [m/s], > 0, from :func:`reference_approach_speed`.
     """
     return np.maximum(
-        stiffness * penetration(gap) ** exponent * (1.0 - damping_factor * gap_rate / approach_speed), 0.0
+        elastic_force(gap, stiffness, exponent) * hysteresis_factor(gap_rate, damping_factor, approach_speed), 0.0
     )
+
+
+@register_jitable
+def hysteresis_factor(gap_rate, damping_factor, approach_speed):
+    r"""The factor :math:`1 + d\,\dot\delta/\dot\delta^- = 1 - d\,\dot g/\dot\delta^-` multiplying :math:`K\delta^n`."""
+    return 1.0 - damping_factor * gap_rate / approach_speed
 
 
 @register_jitable

@@ -65,12 +65,6 @@ def regularised_sign(law, speed, regularisation_speed):
     return sign
 
 
-def update_approach_speeds(pairs, q, v, latched):
-    """Latch or reset every pair's approach speed (in place)."""
-    gap, gap_rate, *_ = pair_geometry(pairs, q, v)
-    latched[:] = normal.latch_approach_speed(gap, gap_rate, latched, pairs.approach_speed_floor)
-
-
 def scene_forces(packed, t, q, v, latched, forces, pair_out):
     """Same contract as :func:`bearing_mbs.contact.kernel.scene_forces`."""
     pairs = packed.pairs

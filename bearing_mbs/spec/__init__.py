@@ -26,13 +26,17 @@ MODEL_SECTIONS = {
 }
 
 #: Contact groups of each model with their defaults; a partial ``[contact.<group>]`` table is merged over them.
-_BEARING_CONTACT = ContactSpec(normal_law="lankarani_nikravesh", stiffness_model="palmgren", restitution=0.9,
-                               approach_speed_floor=0.1, friction_law="erf", friction_coefficient=0.1,
-                               regularisation_speed=0.01)
+# Bearing defaults (docs/bearing.md): Palmgren line contacts, Lankarani–Nikravesh with the approach speed floored
+# at 0.1 m/s (a damping ratio near 0.1 in the load zone instead of an overdamped contact), the annex's erf friction
+# with μ = 0.1 and v_reg = 0.01 m/s, and on the raceways a rolling-resistance arm of 15 µm (f = μ_R/r ≈ 1.2e-3 for
+# the seed roller, the order of catalogue friction coefficients of cylindrical roller bearings, ~0.001).
+_SLIDING = ContactSpec(normal_law="lankarani_nikravesh", stiffness_model="palmgren", restitution=0.9,
+                       approach_speed_floor=0.1, friction_law="erf", friction_coefficient=0.1, regularisation_speed=0.01)
+_RACEWAY = ContactSpec(**{**to_mapping(_SLIDING), "rolling_resistance_arm": 1.5e-5})
 CONTACT_GROUPS = {
     "balls": {"wall": ContactSpec(), "ball": ContactSpec()},
-    "bearing": {"inner_race": _BEARING_CONTACT, "outer_race": _BEARING_CONTACT, "pocket": _BEARING_CONTACT,
-                "land": _BEARING_CONTACT, "roller": _BEARING_CONTACT},
+    "bearing": {"inner_race": _RACEWAY, "outer_race": _RACEWAY, "pocket": _SLIDING, "land": _SLIDING,
+                "roller": _SLIDING},
 }
 
 

@@ -1,6 +1,8 @@
 """Strict conversion between TOML-like mappings and the frozen spec dataclasses.
 
-Unknown keys, missing required keys and wrongly typed values are errors that name the dotted path.
+Unknown keys, missing required keys and wrongly typed values are errors that name the dotted path. A table
+given for a field whose default is itself a table (``[bearing.cage_material]``) is merged over that default,
+so a partial table changes only the keys it names.
 ``--set section.key=value`` overrides are applied to the raw mapping before conversion, so they go
 through exactly the same validation as the file.
 """
@@ -30,7 +32,11 @@ def from_mapping(cls, data, path: str = ""):
     kwargs = {}
     for name, f in fields.items():
         if name in data:
-            kwargs[name] = _convert(hints[name], data[name], _join(path, name))
+            value = data[name]
+            default = _default(f)
+            if dataclasses.is_dataclass(default) and isinstance(value, dict):
+                value = {**to_mapping(default), **value}  # a partial table keeps the field's other defaults
+            kwargs[name] = _convert(hints[name], value, _join(path, name))
         elif f.default is _MISSING and f.default_factory is _MISSING:
             raise SpecError(_join(path, name), None, "required key is missing")
     try:
@@ -51,6 +57,14 @@ def to_mapping(instance) -> dict:
         return value
 
     return plain(instance)
+
+
+def _default(f: dataclasses.Field):
+    if f.default is not _MISSING:
+        return f.default
+    if f.default_factory is not _MISSING:
+        return f.default_factory()
+    return None
 
 
 def _join(path: str, key) -> str:

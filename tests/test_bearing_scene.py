@@ -1,0 +1,196 @@
+"""The bearing's spec, geometry and scene: validation, only-what-is-needed counts, closed forms.
+
+References:
+* item counts follow from the model definition (docs/bearing.md): per roller an inner and an outer raceway
+  pair; pocket pairs P and Q for the penalty cage; one point-on-line constraint per roller for the constraint
+  cage; Z roller–roller pairs and no cage body for a full complement;
+* epicyclic speed ω_c = ω_i(1 − D_w/D_pw)/2 (Harris & Kotzalas, Essential Concepts of Bearing Technology,
+  2006, ch. 8) against the kinematics of the built scene (pure rolling: zero slip at both raceways);
+* the gear train's α1 (digest eqs. 41–44, sign derived) against a direct solve of eqs. 41–42;
+* constraint Jacobians and γ = −Ġq̇ against central finite differences (1e-6 relative).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearing_mbs.builders import build_scene
+from bearing_mbs.contact import twin
+from bearing_mbs.drivetrain import GearTrain
+from bearing_mbs.engines.reference.constraints import constraint_rows
+from bearing_mbs.geometry import BearingGeometry
+from bearing_mbs.spec import GearTrainSpec, SpecError, load_spec, spec_from_mapping
+from bearing_mbs.cases import SCENARIOS
+
+STEADY = SCENARIOS / "seed_hss_steady.toml"
+Z = 15
+
+
+def scene_of(*overrides, path=STEADY):
+    return build_scene(load_spec(path, list(overrides)))
+
+
+@pytest.mark.parametrize(
+    "overrides, counts",
+    [
+        ([], {"bodies": Z + 2, "pairs": 4 * Z, "constraints": 0, "loads": 2, "drives": 1, "sensors": 3}),
+        (["cage.model=constraint"], {"bodies": Z + 2, "pairs": 2 * Z, "constraints": Z, "loads": 2, "drives": 1,
+                                     "sensors": 4}),
+        (["cage.model=none"], {"bodies": Z + 1, "pairs": 3 * Z, "constraints": 0, "loads": 2, "drives": 1,
+                               "sensors": 3}),
+        (["bearing.cage_guidance=outer_land", "bearing.land_clearance=4e-4"],
+         {"bodies": Z + 2, "pairs": 4 * Z + 1, "constraints": 0, "loads": 2, "drives": 1, "sensors": 3}),
+        (["cage.model=constraint", "bearing.cage_guidance=inner_land", "bearing.land_clearance=4e-4"],
+         {"bodies": Z + 2, "pairs": 2 * Z + 1, "constraints": Z, "loads": 2, "drives": 1, "sensors": 4}),
+        (["scenario.gravity=0"], {"bodies": Z + 2, "pairs": 4 * Z, "constraints": 0, "loads": 1, "drives": 1,
+                                  "sensors": 3}),
+        (["scenario.gravity=0", "load.radial=0"], {"bodies": Z + 2, "pairs": 4 * Z, "constraints": 0, "loads": 0,
+                                                   "drives": 1, "sensors": 3}),
+    ],
+)
+def test_each_scene_builds_only_what_it_needs(overrides, counts):
+    assert scene_of(*overrides).counts() == counts
+
+
+def test_full_complement_has_no_cage_and_neighbour_pairs_only():
+    scene = scene_of("cage.model=none")
+    assert "cage" not in [b.name for b in scene.bodies]
+    roller_pairs = [p for p in scene.pairs if p.name.count("roller") == 2]
+    assert len(roller_pairs) == Z
+    assert {(p.body_a, p.body_b) for p in roller_pairs} == {(1 + k, 1 + (k + 1) % Z) for k in range(Z)}
+
+
+def test_gear_train_scene_has_train_loads_and_no_servo():
+    scene = scene_of(path=SCENARIOS / "seed_hss_gear_driven.toml")
+    assert [l.name for l in scene.loads] == ["drive_torque", "mesh_load_x", "mesh_load_y"]
+    assert scene.drives == ()
+
+
+def test_initial_rolling_state_is_epicyclic_with_zero_slip():
+    """Rollers start at the epicyclic speeds: pure rolling at both raceways (slip ~ 0), cage at ω_c."""
+    spec = load_spec(STEADY, ["scenario.gravity=0", "load.radial=0"])
+    scene = build_scene(spec)
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    q, v = scene.initial_state()
+    omega_i = 1500 * 2 * math.pi / 60
+    assert v[5] == pytest.approx(omega_i * (1 - geometry.roller_diameter / geometry.pitch_diameter) / 2)
+    _, _, slip, *_ = twin.pair_geometry(scene.pack().pairs, q, v)
+    races = [k for k, p in enumerate(scene.pairs) if p.name.endswith("_race")]
+    assert np.max(np.abs(slip[races])) < 1e-12 * omega_i * geometry.pitch_diameter
+
+
+def test_seed_preset_is_the_coherent_document_bearing():
+    geometry = BearingGeometry.from_spec(load_spec(STEADY).bearing)
+    assert geometry.roller_diameter == pytest.approx((0.260 - 0.210) / 2, rel=1e-12)
+    assert geometry.pitch_diameter == pytest.approx(0.235)
+    assert abs(geometry.clearance) < 1e-15
+    # roller mass and inertia as the document defines them: ρ π L D²/4 and m D²/8
+    assert geometry.roller_mass == pytest.approx(7850 * math.pi * 0.055 * 0.025**2 / 4)
+    assert geometry.roller_inertia == pytest.approx(geometry.roller_mass * 0.025**2 / 8)
+    # a centred roller is exactly H from each pocket edge (eq. 45)
+    for k in (0, 7):
+        for point in geometry.pocket_points(k):
+            centre = 0.5 * geometry.pitch_diameter * np.array([np.cos(geometry.roller_angles[k]),
+                                                               np.sin(geometry.roller_angles[k])])
+            assert np.hypot(*(centre - point)) == pytest.approx(0.0125 + 0.001, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "override, field, fragment",
+    [
+        ("bearing.rollers=40", "bearing.rollers", "do not fit around the pitch circle"),
+        ("bearing.roller_diameter=0.03", "bearing.outer_race_diameter", "preload beyond a sane bound"),
+        ("bearing.outer_race_diameter=0.275", "bearing.outer_race_diameter", "inconsistent with the roller"),
+        ("bearing.inner_race_diameter=0.2101", "bearing.outer_race_diameter", "preload beyond a sane bound"),
+        ("bearing.cage_diameter=0.27", "bearing.cage_diameter", "inside the rollers' span"),
+        ("bearing.pocket_clearance=0.02", "bearing.rollers", "do not fit"),
+        ("bearing.pitch_diameter=0.235", "bearing.pitch_diameter", "give either"),
+        ("bearing.roller_length=-0.055", "bearing.roller_length", "> 0"),
+        ("bearing.supported_mass=-1", "bearing.supported_mass", ">= 0"),
+        ("bearing.cage_guidance=inner_land", "bearing.land_clearance", "is required"),
+        ("bearing.preset=nu999", "bearing.preset", "seed-hss"),
+        ("bearing.cage_material.density=0", "bearing.cage_material.density", "> 0"),
+        ("bearing.ring_material.poisson_ratio=0.6", "bearing.ring_material.poisson_ratio", "[0, 0.5)"),
+        ("cage.model=floating", "cage.model", "penalty, constraint, none"),
+        ("drive.kind=belt", "drive.kind", "speed, gear_train"),
+        ("drive.servo_time_constant=0", "drive.servo_time_constant", "> 0"),
+        ("drive.kind=gear_train", "drive.gear_train", "is required"),
+        ("load.radial=-5", "load.radial", ">= 0"),
+        ("load.profile=step", "load.profile", None),  # valid: a step to final = 0
+        ("contact.pocket.stiffness_model=document", "contact.pocket.stiffness_model", "raceways only"),
+        ("contact.wall.stiffness=1e6", "contact.wall", "not a contact group of model 'bearing'"),
+        ("balls.0.mass=1", "balls", "not of model 'bearing'"),
+        ("analysis.start=0.2", "analysis.start", "before scenario.end_time"),
+    ],
+)
+def test_bearing_bad_input_names_the_field(override, field, fragment):
+    if fragment is None:
+        scene_of(override)
+        return
+    with pytest.raises(SpecError) as info:
+        scene_of(override)
+    assert info.value.field == field, str(info.value)
+    assert fragment in str(info.value)
+
+
+def test_preload_within_bound_overlaps_only_the_raceways():
+    scene = scene_of("bearing.inner_race_diameter=0.21004")  # 40 µm diametral interference
+    q, v = scene.initial_state()
+    gaps = twin.pair_geometry(scene.pack().pairs, q, v)[0]
+    raceways = np.array([p.name.endswith("_race") for p in scene.pairs])
+    assert np.all(gaps[raceways] < 0) and np.all(gaps[~raceways] > 0)
+
+
+def test_gear_train_acceleration_solves_equations_41_and_42():
+    """α1 from the reduced inertia and drive torque equals a direct solve of eqs. 41–42, and has the sign
+    of the derivation (a rotor torque above the reduced generator torque accelerates shaft 1)."""
+    spec = GearTrainSpec(pinion_radius=0.1, gear_radius=0.4, shaft1_inertia=80, shaft2_inertia=8000,
+                         generator_torque=5000, generator_torque_rate=0, rotor_torque=50000, rotor_torque_rate=0)
+    train = GearTrain(spec)
+    r1, r2, i1, i2 = 0.1, 0.4, 80.0, 8000.0
+    # unknowns (α1, F_T): I1 α1 − r1 F_T = −T_R1 ; I2 (r1/r2) α1 + r2 F_T = T_M2
+    alpha1, tangential = np.linalg.solve([[i1, -r1], [i2 * r1 / r2, r2]], [-5000.0, 50000.0])
+    assert train.pinion_acceleration(0.0) == pytest.approx(alpha1, rel=1e-12)
+    assert train.tangential_force(0.0) == pytest.approx(tangential, rel=1e-12)
+    assert train.drive_torque(0.0) / train.reduced_inertia == pytest.approx(alpha1, rel=1e-12)
+    assert alpha1 > 0
+
+
+def test_constraint_jacobian_and_gamma_match_finite_differences():
+    rng = np.random.default_rng(7)
+    scene = scene_of("cage.model=constraint")
+    constraints = scene.pack().constraints
+    q, v = scene.initial_state()
+    q = q + rng.normal(scale=1e-3, size=q.size)
+    v = v + rng.normal(scale=0.5, size=v.size)
+    c, n = constraints.kind.size, q.size
+    residual, gamma, jacobian = np.empty(c), np.empty(c), np.empty((c, n))
+    constraint_rows(constraints, q, v, residual, jacobian, gamma)
+    eps = 1e-7
+    numeric = np.empty((c, n))
+    for i in range(n):
+        dq = np.zeros(n)
+        dq[i] = eps
+        plus, minus = np.empty(c), np.empty(c)
+        constraint_rows(constraints, q + dq, v, plus, np.empty((c, n)), np.empty(c))
+        constraint_rows(constraints, q - dq, v, minus, np.empty((c, n)), np.empty(c))
+        numeric[:, i] = (plus - minus) / (2 * eps)
+    np.testing.assert_allclose(jacobian, numeric, rtol=1e-6, atol=1e-9)
+    # γ = −Ġq̇: d/dt (G v) along the motion with v fixed, i.e. −(G(q + εv) − G(q − εv)) v / 2ε
+    jp, jm = np.empty((c, n)), np.empty((c, n))
+    constraint_rows(constraints, q + eps * v, v, np.empty(c), jp, np.empty(c))
+    constraint_rows(constraints, q - eps * v, v, np.empty(c), jm, np.empty(c))
+    np.testing.assert_allclose(gamma, -((jp - jm) / (2 * eps)) @ v, rtol=1e-5, atol=1e-6)
+
+
+def test_palmgren_stiffness_is_used_for_the_raceways_by_default():
+    from bearing_mbs.contact.line_contact import palmgren_stiffness
+
+    scene = scene_of()
+    inner = next(p for p in scene.pairs if p.name == "roller0-inner_race")
+    assert inner.law.stiffness == pytest.approx(palmgren_stiffness(0.055), rel=1e-12)
+    assert inner.law.exponent == pytest.approx(10 / 9)
+    document = scene_of("contact.inner_race.stiffness_model=document")
+    inner = next(p for p in document.pairs if p.name == "roller0-inner_race")
+    assert (inner.law.stiffness, inner.law.exponent) == (3e10, 1.3)
