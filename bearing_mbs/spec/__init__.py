@@ -13,6 +13,7 @@ from pathlib import Path
 from .balls import BallSpec, BoxSpec, ConstraintSpec
 from .bearing import PRESETS, AnalysisSpec, BearingSpec, CageSpec, DriveSpec, GearTrainSpec, LoadSpec, MaterialSpec
 from .contact import ContactSpec
+from .convergence import ConvergenceSpec, RunSettings
 from .fields import SpecError, non_negative, one_of, positive, require
 from .loading import apply_override, from_mapping, parse_override, read_toml, to_mapping
 from .solver import ExudynSolver, ReferenceSolver, SolverSpec
@@ -90,6 +91,7 @@ class Spec:
     drive: DriveSpec | None = None
     load: LoadSpec | None = None
     analysis: AnalysisSpec | None = None
+    convergence: ConvergenceSpec | None = None
 
     def __post_init__(self):
         if self.scenario.model == "bearing":
@@ -176,8 +178,10 @@ __all__ = [
     "ConstraintSpec",
     "ContactGroups",
     "ContactSpec",
+    "ConvergenceSpec",
     "ExudynSolver",
     "ReferenceSolver",
+    "RunSettings",
     "Scenario",
     "SolverSpec",
     "Spec",

@@ -1,0 +1,302 @@
+r"""Work–precision studies: error against cost for every engine, method and step of a scenario.
+
+``bearing-mbs convergence SCENARIO.toml --out DIR`` reads the scenario's ``[convergence]`` section
+(:class:`bearing_mbs.spec.convergence.ConvergenceSpec`) and
+
+1. runs the **reference** setting (a much finer step with a high-order method) and a **check** setting
+   (a different method, also fine); their distance is reported as the reference's own error, which must be
+   well below the smallest target;
+2. runs every studied setting, resampled onto the reference's output instants, and measures every norm;
+3. writes ``DIR/convergence.csv`` (a row per run, appended as each finishes, so a re-run skips what is done),
+   ``DIR/work_precision.png``, and ``DIR/summary.json`` / ``DIR/convergence.md`` with the cheapest setting
+   reaching each target error and the observed order of each fixed-step ladder.
+
+Norms (relative unless noted), over the window ``[start, end]``:
+
+* ``positions``: max |Δx|, |Δy| of the bodies' centres, over the smallest ball radius (balls model) or over
+  the largest reference inner-ring displacement (bearing model);
+* ``cage_speed``: |Δ mean cage speed| / reference mean cage speed;
+* ``roller_loads``: max |Δ inner-raceway roller load| / largest reference roller load;
+* ``slips``: max |Δ slip ratio| at loaded raceway contacts (absolute: slip ratios are already ratios).
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import json
+import logging
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..builders import build_scene
+from ..engines import simulate
+from ..progress import ProgressMeter
+from ..result import Result
+from ..runner import write_json
+from ..spec import Spec, SpecError
+from ..spec.convergence import RunSettings
+
+log = logging.getLogger(__name__)
+
+COLUMNS = ("engine", "solver", "step", "tolerance", "error", "wall_time_s", "force_evaluations", "steps",
+           "status", "positions", "cage_speed", "roller_loads", "slips")
+BEARING_NORMS = ("cage_speed", "roller_loads", "slips")
+
+
+def solver_for(spec: Spec, run: RunSettings, value: float):
+    """The spec's solver settings with ``run`` at step or tolerance ``value``."""
+    solver = dataclasses.replace(spec.solver, engine=run.engine)
+    largest = run.step if run.step is not None else spec.solver.output_interval
+    if run.engine == "reference":
+        settings = dataclasses.replace(solver.reference, method=run.method, contact_step=None,
+                                       step=largest if run.adaptive else value,
+                                       tolerance=value if run.adaptive else solver.reference.tolerance)
+        return dataclasses.replace(solver, reference=settings)
+    settings = dataclasses.replace(solver.exudyn, method=run.method, connector=run.connector,
+                                   step=largest if run.adaptive else value,
+                                   tolerance=value if run.adaptive else solver.exudyn.tolerance)
+    return dataclasses.replace(solver, exudyn=settings)
+
+
+def ladder(run: RunSettings) -> list[tuple[float | None, float | None]]:
+    """(step, tolerance) of every setting of a run entry."""
+    return [(None, t) for t in run.tolerances] if run.adaptive else [(s, None) for s in run.steps]
+
+
+def window_mask(spec: Spec, times: np.ndarray) -> np.ndarray:
+    study = spec.convergence
+    start = study.start
+    if start is None:
+        start = (spec.analysis.start if spec.analysis and spec.analysis.start is not None
+                 else spec.scenario.end_time / 2) if spec.scenario.model == "bearing" else 0.0
+    end = study.end if study.end is not None else np.inf
+    return (times >= start - 1e-12) & (times <= end + 1e-12)
+
+
+def resample(result: Result, times: np.ndarray) -> Result:
+    """The result at the given instants (linear interpolation; exact when the instants coincide)."""
+    if result.time.size == times.size and np.allclose(result.time, times, rtol=0, atol=1e-12):
+        return result
+
+    def at(series):
+        flat = series.reshape(series.shape[0], -1)
+        columns = [np.interp(times, result.time, flat[:, j]) for j in range(flat.shape[1])]
+        return np.array(columns).T.reshape((times.size,) + series.shape[1:])
+
+    return dataclasses.replace(result, time=times, position=at(result.position), velocity=at(result.velocity),
+                               pair_output=at(result.pair_output))
+
+
+def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
+    """Every applicable norm of ``result`` against ``reference`` (see the module docstring)."""
+    mask = window_mask(spec, reference.time)
+    run = resample(result, reference.time)
+    norms = {}
+    if spec.scenario.model == "balls":
+        translational = np.concatenate([[3 * i, 3 * i + 1] for i in range(len(scene.bodies))])
+        scale = min(ball.radius for ball in spec.balls)
+    else:
+        translational = np.array([0, 1])
+        scale = np.abs(reference.position[mask][:, :2]).max()
+    delta = run.position[mask][:, translational] - reference.position[mask][:, translational]
+    norms["positions"] = float(np.abs(delta).max() / scale)
+    if spec.scenario.model == "bearing":
+        from ..analysis import bearing as skidding
+
+        cage_run, cage_ref = skidding.cage_speed(scene, run)[mask], skidding.cage_speed(scene, reference)[mask]
+        norms["cage_speed"] = float(abs(cage_run.mean() - cage_ref.mean()) / abs(cage_ref.mean()))
+        inner = skidding.pair_columns(scene, "-inner_race")
+        loads_run = run.pair_series("normal_force")[mask][:, inner]
+        loads_ref = reference.pair_series("normal_force")[mask][:, inner]
+        norms["roller_loads"] = float(np.abs(loads_run - loads_ref).max() / loads_ref.max())
+        fraction = spec.analysis.load_fraction
+        slips = [np.abs(skidding.slip_ratios(scene, run, race, fraction)[mask]
+                        - skidding.slip_ratios(scene, reference, race, fraction)[mask])
+                 for race in ("inner_race", "outer_race")]
+        both = np.concatenate([s.ravel() for s in slips])
+        norms["slips"] = float(np.nanmax(both)) if np.isfinite(both).any() else float("nan")
+    return norms
+
+
+def run_setting(spec: Spec, scene, run: RunSettings, step, tolerance, progress=None) -> Result:
+    solver = solver_for(spec, run, tolerance if run.adaptive else step)
+    return simulate(scene, solver, spec.scenario.end_time, progress)
+
+
+def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = None) -> dict:
+    """Run the work–precision study of ``spec`` into ``directory``; returns the summary."""
+    if spec.convergence is None:
+        raise SpecError("convergence", None, "this scenario has no [convergence] section (see docs/numerics.md)")
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    settings = spec.convergence
+    scene = build_scene(spec)
+    if spec.scenario.model == "balls" and settings.norm in BEARING_NORMS:
+        raise SpecError("convergence.norm", settings.norm, "the balls model has the positions norm only")
+
+    reference = _cached_run(spec, scene, settings.reference, directory / "reference.npz", progress)
+    summary = {"scenario": spec.scenario.name, "norm": settings.norm, "reference": _describe(settings.reference),
+               "reference_wall_time_s": reference.stats.wall_time_s}
+    if settings.check is not None:
+        check = _cached_run(spec, scene, settings.check, directory / "check.npz", progress)
+        summary["check"] = _describe(settings.check)
+        summary["reference_error"] = errors(spec, scene, check, reference)
+        target = min(settings.targets)
+        if summary["reference_error"][settings.norm] > 0.1 * target:
+            log.warning("the reference and its check differ by %.3g in %s, not well below the smallest "
+                        "target %g: refine the reference", summary["reference_error"][settings.norm],
+                        settings.norm, target)
+
+    table = directory / "convergence.csv"
+    rows = _read_rows(table)
+    done = {(r["engine"], r["solver"], r["step"], r["tolerance"]) for r in rows}
+    for run in settings.runs:
+        for step, tolerance in ladder(run):
+            key = (run.engine, run.method, _text(step), _text(tolerance))
+            if key in done:
+                continue
+            result = run_setting(spec, scene, run, step, tolerance, progress)
+            norms = errors(spec, scene, result, reference) if result.success else {}
+            row = {"engine": run.engine, "solver": run.method, "step": _text(step), "tolerance": _text(tolerance),
+                   "error": norms.get(settings.norm, float("nan")), "wall_time_s": result.stats.wall_time_s,
+                   "force_evaluations": result.stats.force_evaluations, "steps": result.stats.steps,
+                   "status": result.status, **{n: norms.get(n, "") for n in COLUMNS[9:]}}
+            _append_row(table, row)
+            rows.append({k: _text(v) if not isinstance(v, str) else v for k, v in row.items()})
+            log.info("%s %s step=%s tol=%s: error %.3g in %.3g s", run.engine, run.method, step, tolerance,
+                     row["error"], result.stats.wall_time_s)
+
+    summary["cheapest"] = cheapest(rows, settings.targets)
+    summary["orders"] = observed_orders(rows)
+    write_json(directory / "summary.json", summary)
+    (directory / "convergence.md").write_text(markdown(summary, rows))
+    work_precision_figure(rows, directory / "work_precision.png", f"{spec.scenario.name}: {settings.norm} error")
+    return summary
+
+
+def cheapest(rows: list[dict], targets) -> dict:
+    """For each target error, the successful row with the smallest wall time reaching it."""
+    answer = {}
+    for target in targets:
+        reaching = [r for r in rows if r["status"] == "success" and _float(r["error"]) <= target]
+        best = min(reaching, key=lambda r: _float(r["wall_time_s"]), default=None)
+        answer[f"{target:g}"] = None if best is None else {k: best[k] for k in COLUMNS[:8]}
+    return answer
+
+
+def observed_orders(rows: list[dict]) -> dict:
+    """Least-squares slope of log(error) against log(step) of each fixed-step ladder (successful runs)."""
+    orders = {}
+    for key in sorted({(r["engine"], r["solver"]) for r in rows if r["step"]}):
+        ladder_rows = [r for r in rows if (r["engine"], r["solver"]) == key and r["step"] and r["status"] == "success"
+                       and _float(r["error"]) > 0]
+        if len(ladder_rows) >= 3:
+            steps = np.log([_float(r["step"]) for r in ladder_rows])
+            errors_ = np.log([_float(r["error"]) for r in ladder_rows])
+            orders[" ".join(key)] = float(np.polyfit(steps, errors_, 1)[0])
+    return orders
+
+
+def work_precision_figure(rows: list[dict], path: Path, title: str) -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axis = plt.subplots(figsize=(7, 5))
+    for key in sorted({(r["engine"], r["solver"]) for r in rows}):
+        points = sorted((_float(r["wall_time_s"]), _float(r["error"])) for r in rows
+                        if (r["engine"], r["solver"]) == key and r["status"] == "success" and _float(r["error"]) > 0)
+        if points:
+            axis.loglog(*zip(*points), "o-", label=" ".join(key))
+    axis.set_xlabel("wall time [s]")
+    axis.set_ylabel("error")
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize="small")
+    axis.set_title(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def markdown(summary: dict, rows: list[dict]) -> str:
+    lines = [f"# Work–precision: {summary['scenario']} ({summary['norm']} error)", "",
+             f"Reference: {summary['reference']}."]
+    if "reference_error" in summary:
+        lines.append(f"Check: {summary['check']}; distance to the reference: "
+                     + ", ".join(f"{k} {v:.2g}" for k, v in summary["reference_error"].items()) + ".")
+    lines += ["", "| engine | solver | step [s] | tolerance | error | wall time [s] | force evaluations | status |",
+              "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        error = _float(r["error"])
+        lines.append(f"| {r['engine']} | {r['solver']} | {r['step']} | {r['tolerance']} | "
+                     f"{error:.2e} | {_float(r['wall_time_s']):.3g} | {r['force_evaluations']} | {r['status']} |")
+    lines += ["", "Cheapest setting reaching each target:", ""]
+    for target, best in summary["cheapest"].items():
+        text = "none of the settings" if best is None else (
+            f"{best['engine']} {best['solver']} step {best['step'] or '-'} tolerance {best['tolerance'] or '-'}: "
+            f"error {_float(best['error']):.2e} in {_float(best['wall_time_s']):.3g} s")
+        lines.append(f"* {target}: {text}")
+    if summary["orders"]:
+        lines += ["", "Observed orders (slope of log error against log step): "
+                  + ", ".join(f"{k} {v:.2f}" for k, v in summary["orders"].items())]
+    return "\n".join(lines) + "\n"
+
+
+def _cached_run(spec, scene, run: RunSettings, path: Path, progress) -> Result:
+    """The reference (or check) run, reused from ``path`` when a previous study of the same spec saved it."""
+    step, tolerance = ladder(run)[0]
+    if path.exists():
+        cached = Result.load(path)
+        if cached.spec == _mapping(spec) and cached.method == run.method and cached.engine == run.engine:
+            return cached
+    result = run_setting(spec, scene, run, step, tolerance, progress)
+    if not result.success:
+        raise RuntimeError(f"the reference run failed: {result.message}")
+    result.spec = _mapping(spec)
+    result.save(path)
+    return result
+
+
+def _mapping(spec):
+    from ..spec import to_mapping
+
+    return json.loads(json.dumps(to_mapping(spec)))
+
+
+def _describe(run: RunSettings) -> str:
+    step, tolerance = ladder(run)[0]
+    what = f"tolerance {tolerance:g}" if run.adaptive else f"step {step:g} s"
+    return f"{run.engine} {run.method}, {what}"
+
+
+def _text(value) -> str:
+    return "" if value is None else repr(float(value)) if isinstance(value, float) else str(value)
+
+
+def _float(value) -> float:
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _read_rows(path: Path) -> list[dict]:
+    if not path.exists():
+        return []
+    with path.open(newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+def _append_row(path: Path, row: dict) -> None:
+    new = not path.exists()
+    with path.open("a", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=COLUMNS)
+        if new:
+            writer.writeheader()
+        writer.writerow({k: _text(v) if isinstance(v, float) else v for k, v in row.items()})
+        handle.flush()
