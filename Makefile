@@ -13,7 +13,7 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 demo: $(STAMP)
-	$(BIN)/bearing-mbs run scenarios/seed_case3.toml --out out/demo
+	$(BIN)/bearing-mbs run scenarios/seed_hss_startup.toml --out out/demo
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

@@ -1,4 +1,4 @@
-"""PNG figures of a result (matplotlib, no screen needed)."""
+"""PNG figures of a result (matplotlib, no screen needed); the bearing model's are in :mod:`.figures_bearing`."""
 
 from __future__ import annotations
 
@@ -10,12 +10,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from .analysis import energy  # noqa: E402
+from .figures_bearing import bearing_figures  # noqa: E402
 from .result import Result  # noqa: E402
 from .scene import Scene  # noqa: E402
 
 
-def balls_figures(scene: Scene, result: Result, directory: Path) -> list[Path]:
-    """Coordinates against time, trajectories, contact forces and energy."""
+def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[Path]:
+    """Coordinates against time, trajectories, contact forces and energy (``spec`` is not needed)."""
     paths = []
     fig, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 7))
     for i, body in enumerate(scene.bodies):
@@ -67,4 +68,5 @@ def _save(fig, path: Path) -> Path:
     return path
 
 
-FIGURES = {"balls": balls_figures}
+#: Figure writers of each model, all called as ``(spec, scene, result, directory) -> list[Path]``.
+FIGURES = {"balls": balls_figures, "bearing": bearing_figures}

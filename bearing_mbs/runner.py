@@ -66,7 +66,7 @@ def write_outputs(spec: Spec, scene: Scene, result: Result, directory: str | Pat
     summary = summarize(spec, scene, result)
     write_json(directory / SUMMARY_FILE, summary)
     if figures:
-        FIGURES[spec.scenario.model](scene, result, directory)
+        FIGURES[spec.scenario.model](spec, scene, result, directory)
     return summary
 
 
