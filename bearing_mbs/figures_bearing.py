@@ -179,7 +179,7 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
     label = axis.text(0.0, 1.0, "", transform=axis.transAxes, va="top", fontsize="small")
     figure.colorbar(colours, ax=axis, shrink=0.7, label="inner-raceway roller load [N]")
     slip = cage_slip_series(spec, scene, result)
-    pocket_points = np.array([geometry.pocket_points(k) for k in range(geometry.rollers)]).reshape(-1, 2)
+    pocket_points = np.array([list(geometry.pocket_points(k).values()) for k in range(geometry.rollers)]).reshape(-1, 2)
 
     def draw(frame):
         i = instants[frame]

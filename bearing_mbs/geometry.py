@@ -10,7 +10,10 @@ pocket k lie on the cage circle :math:`D_c` at :math:`\psi_k \pm \gamma` with
 
 .. math:: \cos\gamma = \frac{(D_{pw}/2)^2 + (D_c/2)^2 - (D_w/2 + H)^2}{D_{pw} D_c / 2},
 
-so a centred roller is exactly :math:`H` from each edge.
+so a centred roller is exactly :math:`H` from each edge. Edges on one circle outside the roller centres hold
+the cage round the circle but hardly radially: a roller-guided cage drifts out of the bearing. Real pocket
+bars wrap the roller on both sides of the pitch circle, so we add the mirror edges P', Q' on the circle
+:math:`2D_{pw} - D_c` inside it (same construction), and the pocket holds its roller from both sides.
 
 Epicyclic (no-slip) kinematics with the outer ring fixed: cage speed
 :math:`\omega_c = \omega_i (1 - D_w/D_{pw})/2`, roller spin (absolute) :math:`\omega_r = -\omega_c D_{pw}/D_w`.
@@ -102,11 +105,19 @@ class BearingGeometry:
         """Absolute roller spin ω_r = −ω_c D_pw/D_w [rad/s] (no slip at the fixed outer raceway)."""
         return -self.epicyclic_cage_speed(inner_speed) * self.pitch_diameter / self.roller_diameter
 
-    def pocket_points(self, k: int) -> tuple[tuple[float, float], tuple[float, float]]:
-        """P and Q of pocket k in the cage frame [m]: on the cage circle at ψ_k ± γ."""
-        radius, psi = self.cage_diameter / 2, self.roller_angles[k]
-        return tuple((radius * math.cos(psi + s * self.pocket_angle), radius * math.sin(psi + s * self.pocket_angle))
-                     for s in (1, -1))
+    def pocket_points(self, k: int) -> dict[str, tuple[float, float]]:
+        """Pocket edges of pocket k in the cage frame [m]: P and Q on the cage circle at ψ_k ± γ (document),
+        P_inner and Q_inner on the mirror circle 2D_pw − D_c (ours)."""
+        psi = self.roller_angles[k]
+        inner_diameter = 2 * self.pitch_diameter - self.cage_diameter
+        inner_angle = pocket_angle(self.pitch_diameter, inner_diameter, self.roller_diameter, self.pocket_clearance)
+        points = {}
+        for suffix, diameter, angle in (("", self.cage_diameter, self.pocket_angle),
+                                        ("_inner", inner_diameter, inner_angle)):
+            for label, sign in (("P", 1), ("Q", -1)):
+                points[label + suffix] = (diameter / 2 * math.cos(psi + sign * angle),
+                                          diameter / 2 * math.sin(psi + sign * angle))
+        return points
 
     def roller_set(self):
         """The same bearing for the quasi-static solver (Palmgren raceway laws)."""

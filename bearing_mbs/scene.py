@@ -165,6 +165,17 @@ class VelocityServo:
 
 
 @dataclass(frozen=True)
+class Drag:
+    """Viscous drag on a body: force −linear·v [N] on its centre and torque −angular·ω [N m]; linear
+    [N s/m] >= 0, angular [N m s/rad] >= 0 (e.g. the lubricant's drag on a roller)."""
+
+    name: str
+    body: int
+    linear: float
+    angular: float = 0.0
+
+
+@dataclass(frozen=True)
 class Scene:
     """Everything an engine needs, and nothing more. ``gravity`` is the acceleration (gx, gy) [m/s²]."""
 
@@ -174,6 +185,7 @@ class Scene:
     constraints: tuple[DistanceConstraint | PointOnLineConstraint, ...] = ()
     loads: tuple[Load, ...] = ()
     drives: tuple[VelocityServo, ...] = ()
+    drags: tuple[Drag, ...] = ()
     gravity: tuple[float, float] = (0.0, 0.0)
 
     def __post_init__(self):
@@ -181,7 +193,7 @@ class Scene:
         for item in (*self.pairs, *self.constraints):
             if max(item.body_a, item.body_b) >= n:
                 raise ValueError(f"{item.name!r} refers to a body index >= {n}")
-        for item in (*self.loads, *self.drives):
+        for item in (*self.loads, *self.drives, *self.drags):
             if not 0 <= item.body < n:
                 raise ValueError(f"{item.name!r} refers to body {item.body}, not in 0..{n - 1}")
 
@@ -198,7 +210,7 @@ class Scene:
             "bodies": True,
             "pairs": bool(self.pairs),
             "constraints": bool(self.constraints),
-            "energy": bool(self.pairs or self.loads or self.drives),
+            "energy": bool(self.pairs or self.loads or self.drives or self.drags),
         }
         return tuple(name for name in SENSORS if wanted[name])
 
@@ -210,6 +222,7 @@ class Scene:
             "constraints": len(self.constraints),
             "loads": len(self.loads) + (1 if any(self.gravity) else 0),
             "drives": len(self.drives),
+            "drags": len(self.drags),
             "sensors": len(self.sensors),
         }
 
@@ -267,6 +280,9 @@ class PackedScene(NamedTuple):
     drive_body: np.ndarray  # (D,) int64
     drive_gain: np.ndarray  # (D,) [N m s/rad]
     drive_profile: np.ndarray  # (D, 2) int64
+    drag_body: np.ndarray  # (G,) int64
+    drag_linear: np.ndarray  # (G,) [N s/m]
+    drag_angular: np.ndarray  # (G,) [N m s/rad]
     profile_times: np.ndarray  # flat table of all profiles' times [s]
     profile_values: np.ndarray  # flat table of all profiles' values
 
@@ -333,6 +349,9 @@ def pack_scene(scene: Scene) -> PackedScene:
         drive_body=np.array([item.body for item in scene.drives], dtype=np.int64),
         drive_gain=np.array([item.gain for item in scene.drives], dtype=float),
         drive_profile=index[n_loads:],
+        drag_body=np.array([d.body for d in scene.drags], dtype=np.int64),
+        drag_linear=np.array([d.linear for d in scene.drags], dtype=float),
+        drag_angular=np.array([d.angular for d in scene.drags], dtype=float),
         profile_times=np.array([t for p in profiles for t in p.times], dtype=float),
         profile_values=np.array([v for p in profiles for v in p.values], dtype=float),
     )

@@ -90,7 +90,10 @@ def total_radial_load(spec) -> float:
 
 def pocket_play_resolution(spec, duration: float) -> float:
     """Apparent cage slip [-] that the pocket clearance alone can produce over ``duration`` [s]: the cage's angle
-    relative to the roller set varies by up to 2H/(D_pw/2), against the epicyclic angle ω_c,epi · duration."""
+    relative to the roller set varies by up to 2H/(D_pw/2), against the epicyclic angle ω_c,epi · duration.
+    Zero for the constraint cage (its angle is locked to the rollers) and without a cage."""
+    if spec.cage.model != "penalty":
+        return 0.0
     geometry = BearingGeometry.from_spec(spec.bearing)
     inner_speed = spec.drive.speed_rpm * 2 * np.pi / 60
     travel = geometry.epicyclic_cage_speed(inner_speed) * duration
@@ -106,7 +109,8 @@ def trend(rows: list[dict]) -> dict:
     return {
         "monotone": bool(np.all(np.diff(slips) > 0)),
         "ratio": float(slips[-1] / slips[0]) if slips[0] != 0 else float("inf"),
-        "margin": float((slips[-1] - slips[0]) / max(row["resolution"] for row in ordered)),
+        "margin": float((slips[-1] - slips[0]) / max(row["resolution"] for row in ordered))
+        if any(row["resolution"] for row in ordered) else float("inf"),
     }
 
 

@@ -92,13 +92,15 @@ def test_cli_animate_writes_a_gif(tmp_path):
     assert (tmp_path / "animation.gif").stat().st_size > 0
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
-    "the model has no load-independent drag on rollers and cage (lubricant drag, Palmgren's M0 ~ 11 N m for this "
-    "bearing): every resisting torque scales with the load, so the cage slip stays within the pocket-play "
-    "resolution at all loads; see docs/skidding.md"))
 def test_cage_slip_grows_as_the_load_falls():
+    """Skidding at low load, as observed on wind-turbine high-speed-shaft bearings (the primary document's
+    motivation and its references [25], [26], [28]): the lubricant's load-independent drag (Palmgren's M0,
+    bearing_mbs/lubrication.py) against a traction that falls with the load. Checked on the constraint cage,
+    whose pockets add no play: cage slip must grow at every step down in load (68 kN, 2 kN, 200 N) and be at
+    least twice as large at the lowest load. (The penalty cage's dry pocket impacts add a load-independent slip
+    of about 0.5 % that masks the trend above a few hundred newtons: docs/cage-models.md.)"""
     sweep = scenario_script("skidding_vs_load")
-    rows = sweep.run((68000.0, 2000.0, 340.0), ("scenario.end_time=0.1", "analysis.start=0.05"))
+    rows = sweep.run((68000.0, 2000.0, 200.0), ("cage.model=constraint", "scenario.end_time=0.1", "analysis.start=0.05"))
     assert all(row["status"] == "success" for row in rows)
     trend = sweep.trend(rows)
     slips = [f"{row['radial_load']:g} N: {100 * row['cage_slip']:.3f} %" for row in rows]

@@ -31,22 +31,25 @@ def scene_of(*overrides, path=STEADY):
     return build_scene(load_spec(path, list(overrides)))
 
 
+ROLLER_GUIDED = "bearing.cage_guidance=rollers"
+
+
 @pytest.mark.parametrize(
     "overrides, counts",
     [
-        ([], {"bodies": Z + 2, "pairs": 4 * Z, "constraints": 0, "loads": 2, "drives": 1, "sensors": 3}),
-        (["cage.model=constraint"], {"bodies": Z + 2, "pairs": 2 * Z, "constraints": Z, "loads": 2, "drives": 1,
-                                     "sensors": 4}),
-        (["cage.model=none"], {"bodies": Z + 1, "pairs": 3 * Z, "constraints": 0, "loads": 2, "drives": 1,
-                               "sensors": 3}),
+        ([ROLLER_GUIDED], {"bodies": Z + 2, "pairs": 6 * Z, "constraints": 0, "loads": 2, "drives": 1, "drags": Z, "sensors": 3}),
+        (["cage.model=constraint", ROLLER_GUIDED], {"bodies": Z + 2, "pairs": 2 * Z, "constraints": Z, "loads": 2, "drives": 1,
+                                     "drags": Z, "sensors": 4}),
+        (["cage.model=none", ROLLER_GUIDED], {"bodies": Z + 1, "pairs": 3 * Z, "constraints": 0, "loads": 2, "drives": 1,
+                               "drags": Z, "sensors": 3}),
         (["bearing.cage_guidance=outer_land", "bearing.land_clearance=4e-4"],
-         {"bodies": Z + 2, "pairs": 4 * Z + 1, "constraints": 0, "loads": 2, "drives": 1, "sensors": 3}),
+         {"bodies": Z + 2, "pairs": 6 * Z + 1, "constraints": 0, "loads": 2, "drives": 1, "drags": Z, "sensors": 3}),
         (["cage.model=constraint", "bearing.cage_guidance=inner_land", "bearing.land_clearance=4e-4"],
-         {"bodies": Z + 2, "pairs": 2 * Z + 1, "constraints": Z, "loads": 2, "drives": 1, "sensors": 4}),
-        (["scenario.gravity=0"], {"bodies": Z + 2, "pairs": 4 * Z, "constraints": 0, "loads": 1, "drives": 1,
-                                  "sensors": 3}),
-        (["scenario.gravity=0", "load.radial=0"], {"bodies": Z + 2, "pairs": 4 * Z, "constraints": 0, "loads": 0,
-                                                   "drives": 1, "sensors": 3}),
+         {"bodies": Z + 2, "pairs": 2 * Z + 1, "constraints": Z, "loads": 2, "drives": 1, "drags": Z, "sensors": 4}),
+        (["scenario.gravity=0", ROLLER_GUIDED], {"bodies": Z + 2, "pairs": 6 * Z, "constraints": 0, "loads": 1, "drives": 1,
+                                  "drags": Z, "sensors": 3}),
+        (["scenario.gravity=0", "load.radial=0", ROLLER_GUIDED], {"bodies": Z + 2, "pairs": 6 * Z, "constraints": 0, "loads": 0,
+                                                   "drives": 1, "drags": Z, "sensors": 3}),
     ],
 )
 def test_each_scene_builds_only_what_it_needs(overrides, counts):
@@ -88,9 +91,9 @@ def test_seed_preset_is_the_coherent_document_bearing():
     # roller mass and inertia as the document defines them: ρ π L D²/4 and m D²/8
     assert geometry.roller_mass == pytest.approx(7850 * math.pi * 0.055 * 0.025**2 / 4)
     assert geometry.roller_inertia == pytest.approx(geometry.roller_mass * 0.025**2 / 8)
-    # a centred roller is exactly H from each pocket edge (eq. 45)
+    # a centred roller is exactly H from each pocket edge (eq. 45, and its mirror inside the pitch circle)
     for k in (0, 7):
-        for point in geometry.pocket_points(k):
+        for point in geometry.pocket_points(k).values():
             centre = 0.5 * geometry.pitch_diameter * np.array([np.cos(geometry.roller_angles[k]),
                                                                np.sin(geometry.roller_angles[k])])
             assert np.hypot(*(centre - point)) == pytest.approx(0.0125 + 0.001, rel=1e-12)
@@ -108,7 +111,6 @@ def test_seed_preset_is_the_coherent_document_bearing():
         ("bearing.pitch_diameter=0.235", "bearing.pitch_diameter", "give either"),
         ("bearing.roller_length=-0.055", "bearing.roller_length", "> 0"),
         ("bearing.supported_mass=-1", "bearing.supported_mass", ">= 0"),
-        ("bearing.cage_guidance=inner_land", "bearing.land_clearance", "is required"),
         ("bearing.preset=nu999", "bearing.preset", "seed-hss"),
         ("bearing.cage_material.density=0", "bearing.cage_material.density", "> 0"),
         ("bearing.ring_material.poisson_ratio=0.6", "bearing.ring_material.poisson_ratio", "[0, 0.5)"),
@@ -132,6 +134,14 @@ def test_bearing_bad_input_names_the_field(override, field, fragment):
         scene_of(override)
     assert info.value.field == field, str(info.value)
     assert fragment in str(info.value)
+
+
+def test_land_guidance_needs_a_land_clearance():
+    mapping = {"scenario": {"name": "b", "model": "bearing", "end_time": 0.01},
+               "bearing": {"preset": "seed-hss", "cage_guidance": "inner_land"}}
+    with pytest.raises(SpecError) as info:
+        spec_from_mapping(mapping)
+    assert info.value.field == "bearing.land_clearance" and "is required" in str(info.value)
 
 
 def test_preload_within_bound_overlaps_only_the_raceways():

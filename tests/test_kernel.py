@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from bearing_mbs.contact import FRICTION_LAWS, PAIR_KINDS, kernel, twin
-from bearing_mbs.scene import GROUND, Body, ContactPair, Load, PairLaw, Profile, Scene, VelocityServo
+from bearing_mbs.scene import GROUND, Body, ContactPair, Drag, Load, PairLaw, Profile, Scene, VelocityServo
 
 
 def random_scene(rng, n_bodies=4, n_pairs=40):
@@ -52,7 +52,8 @@ def random_scene(rng, n_bodies=4, n_pairs=40):
         )
     loads = (Load("f", 0, (1.0, -2.0, 0.3), Profile((0.0, 1.0), (0.0, 2.0))),)
     drives = (VelocityServo("servo", 1, 5.0, Profile((0.0, 0.5), (0.0, 100.0))),)
-    return Scene("random", bodies, tuple(pairs), loads=loads, drives=drives)
+    drags = (Drag("drag", 2, 0.3, 1e-3),)
+    return Scene("random", bodies, tuple(pairs), loads=loads, drives=drives, drags=drags)
 
 
 def random_state(rng, scene, spread=0.1):

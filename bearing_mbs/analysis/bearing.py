@@ -6,7 +6,8 @@ All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` 
   (for a full-complement bearing, the rollers' mean orbital speed); ``cage_slip`` = 1 − that ratio.
 * slip ratio of a roller at a raceway: slip speed over rolling (entrainment) speed at the contact,
   :math:`s = v_{slip}/u`; 0 in pure rolling, ±2 when one surface stands still. Only contacts carrying at least
-  ``load_fraction`` of the largest roller load count. ``max_roller_slip`` is the largest :math:`|s|`.
+  ``load_fraction`` of the largest raceway load at that instant count (so a load drop does not hide them).
+  ``max_roller_slip`` is the largest :math:`|s|`.
 * roller loads: inner-raceway contact forces against the roller's orbital angle ψ = atan2(y, x) (0 along +x,
   counter-clockwise), binned every 360/(2Z) degrees; ``max_roller_load`` is the largest inner-raceway force.
 * ``inner_ring_displacement``: magnitude of the mean inner-ring centre position [m] (its components in
@@ -14,6 +15,8 @@ All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` 
 * ``max_pocket_force``: the largest roller–pocket force, a pocket pair's (penalty cage) or a constraint's
   (constraint cage) [N].
 * ``energy_balance_error``: see :func:`bearing_mbs.analysis.energy_balance_error`.
+* ``max_cage_eccentricity``: the largest distance of the cage centre from the bearing axis [m]; beyond half
+  a roller diameter the cage has left its rollers, and ``warnings`` says so.
 """
 
 from __future__ import annotations
@@ -56,7 +59,8 @@ def slip_ratios(scene, result, race: str, load_fraction: float) -> np.ndarray:
     columns = pair_columns(scene, f"-{race}")
     force = result.pair_series("normal_force")[:, columns]
     slip, rolling = result.pair_series("slip")[:, columns], result.pair_series("rolling_speed")[:, columns]
-    loaded = force >= load_fraction * np.nanmax(result.pair_series("normal_force")[:, pair_columns(scene, "_race")])
+    largest = result.pair_series("normal_force")[:, pair_columns(scene, "_race")].max(axis=1, keepdims=True)
+    loaded = (force > 0) & (force >= load_fraction * largest)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = slip / np.abs(rolling)
     return np.where(loaded & (np.abs(rolling) > 0), ratio, np.nan)
@@ -92,7 +96,7 @@ def bearing_metrics(spec, scene, result) -> dict:
     angles, loads = load_distribution(scene, result, mask, 2 * geometry.rollers)
     offset = result.position[mask][:, :2].mean(axis=0)
 
-    pocket = pair_columns(scene, "pocket_P").tolist() + pair_columns(scene, "pocket_Q").tolist()
+    pocket = [k for k, pair in enumerate(scene.pairs) if "-pocket_" in pair.name]
     if pocket:
         max_pocket = float(result.pair_series("normal_force")[mask][:, pocket].max())
     elif scene.constraints:
@@ -102,6 +106,15 @@ def bearing_metrics(spec, scene, result) -> dict:
 
     def largest(values):
         return float(np.nanmax(np.abs(values))) if np.isfinite(values).any() else None
+
+    names = [b.name for b in scene.bodies]
+    eccentricity, warnings = None, []
+    if "cage" in names:
+        cage = names.index("cage")
+        eccentricity = float(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1]).max())
+        if eccentricity > geometry.roller_diameter / 2:
+            warnings.append(f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller "
+                            f"diameter: it has left its rollers and its speed is meaningless")
 
     return {
         "mean_inner_speed_rpm": float(np.mean(inner_speed[mask]) * 60 / (2 * np.pi)),
@@ -116,5 +129,7 @@ def bearing_metrics(spec, scene, result) -> dict:
         "inner_ring_offset": [float(offset[0]), float(offset[1])],
         "max_pocket_force": max_pocket,
         "energy_balance_error": energy_balance_error(scene, result),
+        "max_cage_eccentricity": eccentricity,
         "analysis_start": float(result.time[mask][0]),
+        "warnings": warnings,
     }

@@ -4,12 +4,14 @@ Bodies, in this order: the inner ring, the cage (penalty and constraint models),
 ring is fixed: it is the ground. Per roller: an inner-raceway pair (circle–circle) and an outer-raceway pair
 (circle inside the hollow outer raceway); then, by cage model,
 
-* ``penalty``: two pocket pairs, roller against the document's pocket edges P and Q (circle–point);
+* ``penalty``: four pocket pairs, roller against the document's pocket edges P and Q and their mirrors
+  inside the pitch circle (circle–point; see :mod:`bearing_mbs.geometry`);
 * ``constraint``: the roller centre held on its pocket's radial line (a point-on-line constraint);
 * ``none``: no cage body, and a roller–roller pair between neighbours (Z pairs).
 
 A land-guided cage adds one cage–land pair. The inner ring turns under a velocity servo or the gear train;
-the radial load, the gear mesh load and gravity are added only when non-zero.
+the radial load, the gear mesh load, gravity and the lubricant's drag on each roller are added only when
+non-zero.
 """
 
 from __future__ import annotations
@@ -21,7 +23,8 @@ import numpy as np
 from ..contact.line_contact import PALMGREN_EXPONENT, STEEL_EFFECTIVE_MODULUS, effective_modulus, palmgren_stiffness
 from ..drivetrain import GearTrain
 from ..geometry import BearingGeometry
-from ..scene import GROUND, Body, ContactPair, Load, PointOnLineConstraint, Profile, Scene, VelocityServo
+from ..lubrication import palmgren_drag_moment, roller_drag_coefficient
+from ..scene import GROUND, Body, ContactPair, Drag, Load, PointOnLineConstraint, Profile, Scene, VelocityServo
 from ..spec import Spec, SpecError
 from .common import initial_gaps, pair_law
 
@@ -65,7 +68,7 @@ def build_bearing_scene(spec: Spec) -> Scene:
         pairs.append(ContactPair(f"roller{k}-outer_race", "circle_in_circle", GROUND, roller, laws["outer_race"],
                                  radius_b=r_w, radius_a=geometry.outer_race_diameter / 2))
         if spec.cage.model == "penalty":
-            for label, point in zip("PQ", geometry.pocket_points(k)):
+            for label, point in geometry.pocket_points(k).items():
                 pairs.append(ContactPair(f"roller{k}-pocket_{label}", "circle_point", CAGE, roller, laws["pocket"],
                                          radius_b=r_w, anchor=point))
         elif spec.cage.model == "constraint":
@@ -99,10 +102,25 @@ def build_bearing_scene(spec: Spec) -> Scene:
         gain = ring_inertia / drive.servo_time_constant
         drives.append(VelocityServo("speed_servo", INNER_RING, gain, speed_profile(spec)))
 
+    drags = tuple(Drag(f"roller{k}-drag", first_roller + k, coefficient) for k in range(geometry.rollers)
+                  if (coefficient := roller_drag(spec, geometry)) > 0)
     scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), tuple(loads), tuple(drives),
-                  gravity=(0.0, -spec.scenario.gravity))
+                  drags, gravity=(0.0, -spec.scenario.gravity))
     _reject_initial_overlap(scene, geometry)
     return scene
+
+
+def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
+    """Viscous drag coefficient [N s/m] on each roller centre from ``[lubricant]`` (0 without drag)."""
+    lubricant = spec.lubricant
+    reference_rpm = lubricant.reference_rpm or spec.drive.speed_rpm
+    if lubricant.model == "none" or not reference_rpm:
+        return 0.0
+    moment = lubricant.drag_moment
+    if moment is None:
+        moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.viscosity, reference_rpm, geometry.pitch_diameter)
+    return roller_drag_coefficient(moment, geometry.rollers, geometry.pitch_diameter,
+                                   geometry.epicyclic_cage_speed(reference_rpm * RPM))
 
 
 def initial_inner_speed(spec: Spec) -> float:

@@ -1,4 +1,5 @@
-"""Compiled evaluation of all forces of a packed scene except gravity and constraint forces.
+"""Compiled evaluation of all forces of a packed scene except gravity and constraint forces: contacts, loads,
+drives and drags.
 
 :func:`scene_forces` loops over the contact pairs, calling the very functions of :mod:`.kinematics`,
 :mod:`.normal` and :mod:`.friction` (``register_jitable``: compiled inline here, plain Python elsewhere), then adds the
@@ -155,4 +156,11 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out):
         torque = packed.drive_gain[j] * (speed - v[i])
         forces[i] += torque
         supplied += torque * v[i]
+    for j in range(packed.drag_body.size):
+        i = 3 * packed.drag_body[j]
+        linear, angular = packed.drag_linear[j], packed.drag_angular[j]
+        forces[i] -= linear * v[i]
+        forces[i + 1] -= linear * v[i + 1]
+        forces[i + 2] -= angular * v[i + 2]
+        dissipated += linear * (v[i] ** 2 + v[i + 1] ** 2) + angular * v[i + 2] ** 2
     return supplied, dissipated

@@ -104,6 +104,12 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out):
         body_forces[body, 2] += torque
         supplied += torque * velocities[body, 2]
 
+    dissipated = loss.sum()
+    for j, body in enumerate(packed.drag_body):
+        coefficients = np.array([packed.drag_linear[j], packed.drag_linear[j], packed.drag_angular[j]])
+        body_forces[body] -= coefficients * velocities[body]
+        dissipated += coefficients @ velocities[body] ** 2
+
     forces[:] = body_forces.ravel()
     pair_out[:, :N_PAIR_OUTPUTS] = np.column_stack([gap, gap_rate, slip, fn, ft, moment, loss, rolling])
-    return supplied, loss.sum()
+    return supplied, dissipated

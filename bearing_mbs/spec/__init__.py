@@ -11,7 +11,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .balls import BallSpec, BoxSpec, ConstraintSpec
-from .bearing import PRESETS, AnalysisSpec, BearingSpec, CageSpec, DriveSpec, GearTrainSpec, LoadSpec, MaterialSpec
+from .bearing import (
+    PRESETS, AnalysisSpec, BearingSpec, CageSpec, DriveSpec, GearTrainSpec, LoadSpec, LubricantSpec, MaterialSpec,
+)
 from .contact import ContactSpec
 from .convergence import ConvergenceSpec, RunSettings
 from .fields import SpecError, non_negative, one_of, positive, require
@@ -23,7 +25,7 @@ MODELS = ("balls", "bearing")
 #: Sections each model reads; a section of another model is an error.
 MODEL_SECTIONS = {
     "balls": ("balls", "box", "constraints"),
-    "bearing": ("bearing", "cage", "drive", "load", "analysis"),
+    "bearing": ("bearing", "cage", "drive", "load", "lubricant", "analysis"),
 }
 
 #: Contact groups of each model with their defaults; a partial ``[contact.<group>]`` table is merged over them.
@@ -90,6 +92,7 @@ class Spec:
     cage: CageSpec | None = None
     drive: DriveSpec | None = None
     load: LoadSpec | None = None
+    lubricant: LubricantSpec | None = None
     analysis: AnalysisSpec | None = None
     convergence: ConvergenceSpec | None = None
 
@@ -97,7 +100,7 @@ class Spec:
         if self.scenario.model == "bearing":
             require(self.bearing is not None, "bearing", None, "the bearing model needs a [bearing] section")
             for name, default in (("cage", CageSpec), ("drive", DriveSpec), ("load", LoadSpec),
-                                  ("analysis", AnalysisSpec)):
+                                  ("lubricant", LubricantSpec), ("analysis", AnalysisSpec)):
                 if getattr(self, name) is None:
                     object.__setattr__(self, name, default())
             if self.analysis.start is not None:
@@ -173,6 +176,7 @@ __all__ = [
     "DriveSpec",
     "GearTrainSpec",
     "LoadSpec",
+    "LubricantSpec",
     "MaterialSpec",
     "BoxSpec",
     "ConstraintSpec",

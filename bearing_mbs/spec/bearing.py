@@ -256,6 +256,33 @@ class LoadSpec:
 
 
 @dataclass(frozen=True)
+class LubricantSpec:
+    """``[lubricant]``: load-independent drag of the lubricant on the rollers (:mod:`bearing_mbs.lubrication`).
+
+    model: ``palmgren`` (default) or ``none``. viscosity [m²/s] > 0: kinematic viscosity at operating
+    temperature (default 32e-6, an ISO VG 320 gearbox oil near 80 °C). drag_factor: Palmgren's f_0 in
+    [0.5, 10] (default 2, a cylindrical roller bearing with cage, oil-lubricated). reference_rpm: the speed at
+    which the drag equals Palmgren's M_0 (default: the drive's speed_rpm). drag_moment [N m] >= 0: M_0 itself,
+    replacing the formula.
+    """
+
+    model: str = "palmgren"
+    viscosity: float = 32e-6
+    drag_factor: float = 2.0
+    reference_rpm: float | None = None
+    drag_moment: float | None = None
+
+    def __post_init__(self):
+        one_of("model", self.model, ("palmgren", "none"))
+        positive("viscosity", self.viscosity)
+        in_range("drag_factor", self.drag_factor, 0.5, 10.0)
+        if self.reference_rpm is not None:
+            positive("reference_rpm", self.reference_rpm)
+        if self.drag_moment is not None:
+            non_negative("drag_moment", self.drag_moment)
+
+
+@dataclass(frozen=True)
 class AnalysisSpec:
     """``[analysis]``: start [s] of the window over which means are taken (default: the second half of
     the run); load_fraction: contacts carrying less than this fraction of the largest roller load are
