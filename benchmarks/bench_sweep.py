@@ -18,11 +18,13 @@ import datetime
 import json
 import logging
 import os
-import platform
 import sys
 import tempfile
 import time
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from common import machine  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "out" / "sweep_throughput.json"
@@ -74,26 +76,6 @@ def measure(the_study, workers: int) -> dict:
     }
 
 
-def machine() -> dict:
-    from importlib.metadata import version
-
-    import dask
-    import distributed
-    import numpy
-
-    return {
-        "platform": platform.platform(),
-        "processor": platform.processor() or platform.machine(),
-        "cpu_count": os.cpu_count(),
-        "affinity_cpus": len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None,
-        "python": sys.version.split()[0],
-        "numpy": numpy.__version__,
-        "dask": dask.__version__,
-        "distributed": distributed.__version__,
-        "SALib": version("SALib"),
-    }
-
-
 def main(argv: list[str] = ()) -> dict:
     """Run the benchmark (``argv``: command-line options; none when called by ``run_all.py``)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -118,7 +100,7 @@ def main(argv: list[str] = ()) -> dict:
         "results": results,
         "speedup_2_over_1": two["runs_per_s"] / one["runs_per_s"],
         "parallel_efficiency": two["runs_per_s"] / one["runs_per_s"] / 2,
-        "machine": machine(),
+        "machine": machine(),  # benchmarks/common.py: platform, CPUs, versions, load average
         # other processes on the machine compete with the workers: a 1-minute load near or above the CPU
         # count before the run makes the 2-worker figure meaningless
         "load_average_1_5_15min": {"before": load_before, "after": load_after},

@@ -16,7 +16,7 @@ OUT = Path(__file__).resolve().parent / "out"
 def machine() -> dict:
     """What the figures were measured on."""
     versions = {}
-    for package in ("numpy", "numba", "exudyn", "scipy", "dask", "SALib"):
+    for package in ("numpy", "numba", "exudyn", "scipy", "dask", "distributed", "SALib"):
         try:
             versions[package] = metadata.version(package)
         except metadata.PackageNotFoundError:
@@ -25,6 +25,7 @@ def machine() -> dict:
         "platform": platform.platform(),
         "processor": platform.processor() or platform.machine(),
         "cpu_count": os.cpu_count(),
+        "affinity_cpus": len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None,
         "python": sys.version.split()[0],
         "versions": versions,
         "load_average": os.getloadavg() if hasattr(os, "getloadavg") else None,
