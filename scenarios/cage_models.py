@@ -1,8 +1,10 @@
 """Cage-model comparison: the same scenario with a penalty cage, a constraint cage and no cage.
 
-``run()`` simulates ``cage_models.toml`` (or another base) once per cage model and returns the comparison table;
-``main()`` also writes it as Markdown and CSV with two figures (cage slip against time, roller load against
-orbital angle). The write-up is docs/cage-models.md.
+``run()`` simulates ``cage_models.toml`` (or another base) once per case of :data:`CASES` (by default the three
+cage models, guided as the base says: on the outer-ring land) and returns the comparison table; ``main()`` adds
+the two caged models guided by their rollers only (:data:`ROLLER_GUIDED`), and writes the table as Markdown
+and CSV with two figures (cage slip against time, roller load against orbital angle). The write-up is
+docs/cage-models.md.
 
     python scenarios/cage_models.py                      # writes into docs/figures/
     python scenarios/cage_models.py --out out/cage --set scenario.end_time=0.05 --set analysis.start=0.02
@@ -26,6 +28,11 @@ from bearing_mbs.spec import load_spec
 BASE = Path(__file__).with_name("cage_models.toml")
 OUT = Path(__file__).resolve().parents[1] / "docs" / "figures"
 MODELS = ("penalty", "constraint", "none")
+#: The comparison's cases: label -> overrides of the base scenario (by default one per cage model).
+CASES = {model: (f"cage.model={model}",) for model in MODELS}
+#: The caged models guided by their rollers only, without the base's land (drawn dashed).
+ROLLER_GUIDED = {f"{model}, roller-guided": (f"cage.model={model}", "bearing.cage_guidance=rollers")
+                 for model in ("penalty", "constraint")}
 
 #: Table columns: (key, heading, scale applied to the summary value).
 COLUMNS = (
@@ -34,7 +41,7 @@ COLUMNS = (
     ("max_pocket_force", "max pocket force [N]", 1.0),
     ("max_roller_load", "max roller load [N]", 1.0),
     ("inner_ring_displacement", "inner-ring displacement [µm]", 1e6),
-    ("max_cage_excursion", "max cage excursion [µm]", 1e6),
+    ("max_cage_excursion", "max cage eccentricity [µm]", 1e6),
     ("wall_time_s", "wall time [s]", 1.0),
     ("steps", "steps", None),
     ("force_evaluations", "force evaluations", None),
@@ -44,7 +51,7 @@ COLUMNS = (
 
 @dataclass
 class ModelRun:
-    """One cage model's run and its summary (see :func:`bearing_mbs.runner.summarize`)."""
+    """One case's run and its summary (see :func:`bearing_mbs.runner.summarize`); ``model`` is the case's label."""
 
     model: str
     spec: object
@@ -53,33 +60,28 @@ class ModelRun:
     summary: dict
 
 
-def run(overrides: tuple[str, ...] = (), base: str | Path = BASE) -> tuple[list[dict], list[ModelRun]]:
-    """Run ``base`` with each cage model (``overrides`` apply to all); returns the table rows (one dict per
-    model, keyed as :data:`COLUMNS`, values in SI) and the runs."""
+def run(overrides: tuple[str, ...] = (), base: str | Path = BASE,
+        cases: dict[str, tuple[str, ...]] | None = None) -> tuple[list[dict], list[ModelRun]]:
+    """Run ``base`` once per case of ``cases`` (default :data:`CASES`; ``overrides`` apply to all); returns
+    the table rows (one dict per case, keyed as :data:`COLUMNS`, values in SI) and the runs."""
     runs = []
-    for model in MODELS:
-        spec = load_spec(base, [*overrides, f"cage.model={model}"])
+    for label, selection in (CASES if cases is None else cases).items():
+        spec = load_spec(base, [*overrides, *selection])
         scene, result = run_spec(spec)
-        runs.append(ModelRun(model, spec, scene, result, summarize(spec, scene, result)))
+        runs.append(ModelRun(label, spec, scene, result, summarize(spec, scene, result)))
     return [table_row(r) for r in runs], runs
 
 
 def table_row(run: ModelRun) -> dict:
-    """The comparison quantities of one run (SI units)."""
+    """The comparison quantities of one run (SI units); ``max_cage_excursion`` is the summary's
+    ``max_cage_eccentricity``, the largest distance of the cage centre from the axis over the run (None
+    without a cage)."""
     row = {key: run.summary.get(key) for key, _, _ in COLUMNS if key != "max_cage_excursion"}
     row["model"] = run.model
-    row["max_cage_excursion"] = max_cage_excursion(run.scene, run.result)
+    row["max_cage_excursion"] = run.summary.get("max_cage_eccentricity")
     row["status"] = run.summary["status"]
+    row["warnings"] = run.summary.get("warnings") or []
     return row
-
-
-def max_cage_excursion(scene, result) -> float | None:
-    """Largest distance of the cage centre from the bearing axis over the run [m]; None without a cage."""
-    names = [body.name for body in scene.bodies]
-    if "cage" not in names:
-        return None
-    cage = names.index("cage")
-    return float(np.max(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1])))
 
 
 def markdown_table(rows: list[dict]) -> str:
@@ -105,9 +107,9 @@ def write_csv(rows: list[dict], path: Path) -> Path:
 def plot_cage_slip(runs: list[ModelRun], path: Path) -> Path:
     """Cage slip [%] of every model against time [s] in one plot."""
     figure, axis = _figure((7.0, 3.8))
-    for r in runs:
-        axis.plot(r.result.time, 100 * cage_slip_series(r.spec, r.scene, r.result), linewidth=0.9,
-                  label=f"{r.model} (mean {100 * r.summary['cage_slip']:.2f} %)")
+    for n, r in enumerate(runs):
+        axis.plot(r.result.time, 100 * cage_slip_series(r.spec, r.scene, r.result), _line_style(r),
+                  color=f"C{n}", linewidth=0.9, label=f"{r.model} (mean {100 * r.summary['cage_slip']:.3g} %)")
     start = r.result.time[window(r.spec, r.result)][0]
     axis.axvspan(start, r.result.time[-1], color="grey", alpha=0.12, linewidth=0, label="analysis window")
     axis.axhline(0.0, color="grey", linewidth=0.6)
@@ -122,10 +124,10 @@ def plot_cage_slip(runs: list[ModelRun], path: Path) -> Path:
 def plot_roller_loads(runs: list[ModelRun], path: Path) -> Path:
     """Mean inner-raceway roller load [N] against orbital angle [deg] over the analysis window, per model."""
     figure, axis = _figure((7.0, 3.8))
-    for r in runs:
+    for n, r in enumerate(runs):
         bins = 2 * roller_indices(r.scene).size
         angles, loads = load_distribution(r.scene, r.result, window(r.spec, r.result), bins)
-        axis.plot(angles, loads, "o-", markersize=3, label=r.model)
+        axis.plot(angles, loads, "o" + _line_style(r), color=f"C{n}", markersize=3, label=r.model)
     axis.set_xlim(0.0, 360.0)
     axis.set_xticks(np.arange(0, 361, 45))
     axis.set_xlabel("orbital angle ψ [deg] (0 along +x, counter-clockwise; load towards 270°)")
@@ -146,14 +148,22 @@ def main(argv: list[str] | None = None) -> list[dict]:
     logging.basicConfig(level=logging.WARNING)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    rows, runs = run(tuple(args.set), args.base)
+    rows, runs = run(tuple(args.set), args.base, {**CASES, **ROLLER_GUIDED})
     table = markdown_table(rows)
     (out / "cage_models.md").write_text(table)
     write_csv(rows, out / "cage_models.csv")
     plot_cage_slip(runs, out / "cage_models_slip.png")
     plot_roller_loads(runs, out / "cage_models_loads.png")
     print(table)
+    for row in rows:
+        for warning in row["warnings"]:
+            print(f"warning ({row['model']}): {warning}")
     return rows
+
+
+def _line_style(run: ModelRun) -> str:
+    """Dashed for a cage guided by its rollers only, solid otherwise."""
+    return "--" if run.spec.bearing.cage_guidance == "rollers" and run.spec.cage.model != "none" else "-"
 
 
 def _cell(value, scale) -> str:

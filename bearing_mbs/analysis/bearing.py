@@ -6,8 +6,10 @@ All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` 
   (for a full-complement bearing, the rollers' mean orbital speed); ``cage_slip`` = 1 − that ratio.
 * slip ratio of a roller at a raceway: slip speed over rolling (entrainment) speed at the contact,
   :math:`s = v_{slip}/u`; 0 in pure rolling, ±2 when one surface stands still. Only contacts carrying at least
-  ``load_fraction`` of the largest raceway load at that instant count (so a load drop does not hide them).
-  ``max_roller_slip`` is the largest :math:`|s|`.
+  ``load_fraction`` of the largest raceway load at that instant count (so a load drop does not hide them),
+  and only while the rolling speed exceeds the contact's friction regularisation speed (below it the ratio
+  of two vanishing speeds means nothing: a bearing at standstill). ``max_roller_slip`` is the largest
+  :math:`|s|`.
 * roller loads: inner-raceway contact forces against the roller's orbital angle ψ = atan2(y, x) (0 along +x,
   counter-clockwise), binned every 360/(2Z) degrees; ``max_roller_load`` is the largest inner-raceway force.
 * ``inner_ring_displacement``: magnitude of the mean inner-ring centre position [m] (its components in
@@ -61,9 +63,10 @@ def slip_ratios(scene, result, race: str, load_fraction: float) -> np.ndarray:
     slip, rolling = result.pair_series("slip")[:, columns], result.pair_series("rolling_speed")[:, columns]
     largest = result.pair_series("normal_force")[:, pair_columns(scene, "_race")].max(axis=1, keepdims=True)
     loaded = (force > 0) & (force >= load_fraction * largest)
+    rolling_floor = np.array([scene.pairs[k].law.regularisation_speed for k in columns])
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = slip / np.abs(rolling)
-    return np.where(loaded & (np.abs(rolling) > 0), ratio, np.nan)
+    return np.where(loaded & (np.abs(rolling) > rolling_floor), ratio, np.nan)
 
 
 def roller_orbit_angles(scene, result) -> np.ndarray:

@@ -113,7 +113,7 @@ def build_bearing_scene(spec: Spec) -> Scene:
 def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
     """Viscous drag coefficient [N s/m] on each roller centre from ``[lubricant]`` (0 without drag)."""
     lubricant = spec.lubricant
-    reference_rpm = lubricant.reference_rpm or spec.drive.speed_rpm
+    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec)
     if lubricant.model == "none" or not reference_rpm:
         return 0.0
     moment = lubricant.drag_moment
@@ -121,6 +121,16 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
         moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.viscosity, reference_rpm, geometry.pitch_diameter)
     return roller_drag_coefficient(moment, geometry.rollers, geometry.pitch_diameter,
                                    geometry.epicyclic_cage_speed(reference_rpm * RPM))
+
+
+def highest_speed_rpm(spec: Spec) -> float:
+    """The drive's highest speed [rpm]: the operating speed of a ramp or table (start-up, stop)."""
+    drive = spec.drive
+    if drive.kind == "speed" and drive.profile == "ramp":
+        return max(abs(drive.from_rpm), abs(drive.speed_rpm))
+    if drive.kind == "speed" and drive.profile == "table":
+        return max(abs(s) for s in drive.speeds_rpm)
+    return abs(drive.speed_rpm)
 
 
 def initial_inner_speed(spec: Spec) -> float:

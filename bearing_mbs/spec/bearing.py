@@ -262,7 +262,7 @@ class LubricantSpec:
     model: ``palmgren`` (default) or ``none``. viscosity [m²/s] > 0: kinematic viscosity at operating
     temperature (default 32e-6, an ISO VG 320 gearbox oil near 80 °C). drag_factor: Palmgren's f_0 in
     [0.5, 10] (default 2, a cylindrical roller bearing with cage, oil-lubricated). reference_rpm: the speed at
-    which the drag equals Palmgren's M_0 (default: the drive's speed_rpm). drag_moment [N m] >= 0: M_0 itself,
+    which the drag equals Palmgren's M_0 (default: the drive's highest speed). drag_moment [N m] >= 0: M_0 itself,
     replacing the formula.
     """
 
