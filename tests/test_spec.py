@@ -103,3 +103,8 @@ def test_cli_rejects_bad_input_with_exit_status_2_and_writes_nothing(tmp_path, c
     assert status == 2
     assert "contact.wall.restitution = 0" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_a_bearing_spec_round_trips_through_its_mapping():
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml")
+    assert spec_from_mapping(json.loads(json.dumps(to_mapping(spec)))) == spec

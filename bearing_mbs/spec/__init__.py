@@ -142,6 +142,9 @@ def with_model_defaults(data: dict) -> dict:
     for other, sections in MODEL_SECTIONS.items():
         for section in sections:
             if other != model and section in data:
+                if data[section] in ([], {}):  # an empty section (e.g. written back by to_mapping) is absent
+                    del data[section]
+                    continue
                 raise SpecError(section, "...", f"is a section of the {other} model, not of model {model!r}")
     contact = data.setdefault("contact", {})
     if isinstance(contact, dict):
