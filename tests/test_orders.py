@@ -107,3 +107,15 @@ def test_adaptive_pair_error_falls_at_fifth_order_in_work(smooth_reference):
     slope = -observed_order(np.array(steps, float), errors)
     assert abs(slope - 5) < 0.6, f"dopri5: error ∝ steps^-{slope:.2f}, expected 5; {list(zip(steps, errors))}"
     assert errors[-1] < 1e-10
+
+
+@pytest.mark.parametrize("method", ["central_difference", "velocity_verlet", "rk4", "dopri5"])
+def test_output_interval_does_not_change_the_solution(method):
+    """Decimated output and the progress chunks are observation only: the final state is the same (to
+    round-off) whether the engine stops every 0.1 ms or only at the end."""
+    scene = ball_in_ring_scene()
+    finals = []
+    for interval in (END_TIME, 1e-4):
+        solver = SolverSpec(output_interval=interval, reference=ReferenceSolver(method=method, step=1e-5))
+        finals.append(simulate(scene, solver, END_TIME).position[-1])
+    np.testing.assert_allclose(finals[0], finals[1], rtol=0, atol=1e-13)

@@ -48,6 +48,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     out_constraints = np.full((times.size, constraint_count), np.nan)
     work = np.zeros(2)
     counters = np.zeros(3, dtype=np.int64)
+    verlet_acc, verlet_power, verlet_ready = np.zeros(n), np.zeros(2), np.zeros(1, dtype=np.int64)
 
     method = ig.METHOD_CODES[settings.method]
     tableau = TABLEAUS.get(settings.method)
@@ -57,7 +58,8 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     def run(t, t_stop, h_adaptive, index):
         return ig.integrate(method, packed, *tab, q, v, latched, events, work, bounds, solver.speed_limit, t, t_stop,
                             settings.step, contact_step, settings.tolerance, h_adaptive, times, index, out_t, out_q,
-                            out_v, out_pairs, out_work, out_constraints, counters)
+                            out_v, out_pairs, out_work, out_constraints, counters, verlet_acc, verlet_power,
+                            verlet_ready)
 
     run(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
 

@@ -107,12 +107,14 @@ def _error_norm(tab_b, tab_e, h, q, v, q_new, v_new, kq, kv, tolerance):
 def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
               q, v, latched, events, work, penetration_bound, speed_limit, t, t_stop, step, contact_step,
               tolerance, h_adaptive, output_times, output_index, out_t, out_q, out_v, out_pairs, out_work,
-              out_constraints, counters):
+              out_constraints, counters, acc, power, verlet_ready):
     """Advance from t to t_stop (an output time), writing outputs on the way.
 
-    ``work`` holds the cumulative (supplied, dissipated) work [J]. Returns (t, h_adaptive, output_index, status,
-    culprit): ``culprit`` is the offending pair (penetration) or coordinate (non-finite state, blow-up), −1
-    otherwise. On a stop, q and v hold the last good state.
+    ``work`` holds the cumulative (supplied, dissipated) work [J]. ``acc``, ``power`` and ``verlet_ready``
+    carry velocity Verlet's last acceleration and power between calls, so chunks and output instants do not
+    change its result. Returns (t, h_adaptive, output_index, status, culprit): ``culprit`` is the offending
+    pair (penetration) or coordinate (non-finite state, blow-up), −1 otherwise. On a stop, q and v hold the
+    last good state.
     """
     n = q.size
     adaptive = tab_e.size > 0
@@ -125,9 +127,10 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
     forces = np.empty(n)
     pair_out = np.empty(out_pairs.shape[1:])
     constraint_forces = np.empty(out_constraints.shape[1])
-    acc = np.empty(n)
-    power = np.zeros(2)  # velocity Verlet: (supplied, dissipated) at the current state
-    first_ready = False  # kq[0], kv[0], kp[0] (RK) or acc, power (velocity Verlet) hold f at the current state
+    output_acc = np.empty(n)
+    # kq[0], kv[0], kp[0] (RK) or acc, power (velocity Verlet) hold f at the current state
+    first_ready = method == VELOCITY_VERLET and verlet_ready[0] == 1
+    status, culprit = RUNNING, -1
     has_constraints = packed.constraints.kind.size > 0
     scale = length_scale(packed.constraints, q) if has_constraints else 1.0
 
@@ -184,7 +187,8 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
                         counters[REJECTED] += 1
                         h_adaptive = h * factor if math.isfinite(error) else 0.2 * h
                         if h_adaptive < 1e-14 * max(1.0, abs(t)):
-                            return t, h_adaptive, output_index, STEP_UNDERFLOW, -1
+                            status = STEP_UNDERFLOW
+                            break
                         continue
                     proposal = max(h * factor, h_adaptive) if landing else h * factor
                     h_adaptive = min(proposal, step)
@@ -197,7 +201,8 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
             if has_constraints:
                 violation = project_positions(packed.constraints, packed.inverse_mass, q_new, scale)
                 if not violation <= 1e-10 * scale:
-                    return t, h_adaptive, output_index, PROJECTION_FAILED, -1
+                    status = PROJECTION_FAILED
+                    break
                 if method != CENTRAL_DIFFERENCE:  # its velocity is the backward difference below
                     project_velocities(packed.constraints, packed.inverse_mass, q_new, v_new)
                 first_ready = False
@@ -206,11 +211,13 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
                     v_new[i] = (q_new[i] - q[i]) / h
 
             for i in range(n):
-                if not (math.isfinite(q_new[i]) and math.isfinite(v_new[i])):
-                    return t, h_adaptive, output_index, NONFINITE, i
+                if status == RUNNING and not (math.isfinite(q_new[i]) and math.isfinite(v_new[i])):
+                    status, culprit = NONFINITE, i
             for body in range(n // 3):
-                if v_new[3 * body] ** 2 + v_new[3 * body + 1] ** 2 > speed_limit**2:
-                    return t, h_adaptive, output_index, BLOWUP, 3 * body
+                if status == RUNNING and v_new[3 * body] ** 2 + v_new[3 * body + 1] ** 2 > speed_limit**2:
+                    status, culprit = BLOWUP, 3 * body
+            if status != RUNNING:
+                break
             q[:] = q_new
             v[:] = v_new
             work[0] += step_work_supplied
@@ -226,18 +233,22 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
             if changed:
                 first_ready = False
             if worst >= 0:
-                return t, h_adaptive, output_index, PENETRATION, worst
+                status, culprit = PENETRATION, worst
+                break
             if method == RUNGE_KUTTA and first_ready:
                 kq[0, :] = kq[stages - 1]
                 kv[0, :] = kv[stages - 1]
                 kp[0, :] = kp[stages - 1]
 
+        if status != RUNNING:
+            break
         out_t[output_index] = t
         out_q[output_index] = q
         out_v[output_index] = v
-        accelerations(packed, t, q, v, latched, acc, forces, pair_out, constraint_forces)
+        accelerations(packed, t, q, v, latched, output_acc, forces, pair_out, constraint_forces)
         out_pairs[output_index] = pair_out
         out_work[output_index] = work
         out_constraints[output_index] = constraint_forces
         output_index += 1
-    return t, h_adaptive, output_index, RUNNING, -1
+    verlet_ready[0] = 1 if (method == VELOCITY_VERLET and first_ready) else 0
+    return t, h_adaptive, output_index, status, culprit
