@@ -22,11 +22,9 @@ Norms (relative unless noted), over the window ``[start, end]``:
 
 from __future__ import annotations
 
-import csv
 import dataclasses
 import json
 import logging
-import math
 from pathlib import Path
 
 import numpy as np
@@ -36,6 +34,7 @@ from ..engines import simulate
 from ..progress import ProgressMeter
 from ..result import Result
 from ..runner import write_json
+from .table import append_row, number, read_rows, text
 from ..spec import Spec, SpecError
 from ..spec.convergence import RunSettings
 
@@ -151,21 +150,21 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
                         settings.norm, target)
 
     table = directory / "convergence.csv"
-    rows = _read_rows(table)
+    rows = read_rows(table)
     done = {(r["engine"], r["solver"], r["step"], r["tolerance"]) for r in rows}
     for run in settings.runs:
         for step, tolerance in ladder(run):
-            key = (run.engine, run.method, _text(step), _text(tolerance))
+            key = (run.engine, run.method, text(step), text(tolerance))
             if key in done:
                 continue
             result = run_setting(spec, scene, run, step, tolerance, progress)
             norms = errors(spec, scene, result, reference) if result.success else {}
-            row = {"engine": run.engine, "solver": run.method, "step": _text(step), "tolerance": _text(tolerance),
+            row = {"engine": run.engine, "solver": run.method, "step": text(step), "tolerance": text(tolerance),
                    "error": norms.get(settings.norm, float("nan")), "wall_time_s": result.stats.wall_time_s,
                    "force_evaluations": result.stats.force_evaluations, "steps": result.stats.steps,
                    "status": result.status, **{n: norms.get(n, "") for n in COLUMNS[9:]}}
-            _append_row(table, row)
-            rows.append({k: _text(v) if not isinstance(v, str) else v for k, v in row.items()})
+            append_row(table, row, COLUMNS)
+            rows.append({k: text(v) if not isinstance(v, str) else v for k, v in row.items()})
             log.info("%s %s step=%s tol=%s: error %.3g in %.3g s", run.engine, run.method, step, tolerance,
                      row["error"], result.stats.wall_time_s)
 
@@ -181,8 +180,8 @@ def cheapest(rows: list[dict], targets) -> dict:
     """For each target error, the successful row with the smallest wall time reaching it."""
     answer = {}
     for target in targets:
-        reaching = [r for r in rows if r["status"] == "success" and _float(r["error"]) <= target]
-        best = min(reaching, key=lambda r: _float(r["wall_time_s"]), default=None)
+        reaching = [r for r in rows if r["status"] == "success" and number(r["error"]) <= target]
+        best = min(reaching, key=lambda r: number(r["wall_time_s"]), default=None)
         answer[f"{target:g}"] = None if best is None else {k: best[k] for k in COLUMNS[:8]}
     return answer
 
@@ -192,10 +191,10 @@ def observed_orders(rows: list[dict]) -> dict:
     orders = {}
     for key in sorted({(r["engine"], r["solver"]) for r in rows if r["step"]}):
         ladder_rows = [r for r in rows if (r["engine"], r["solver"]) == key and r["step"] and r["status"] == "success"
-                       and _float(r["error"]) > 0]
+                       and number(r["error"]) > 0]
         if len(ladder_rows) >= 3:
-            steps = np.log([_float(r["step"]) for r in ladder_rows])
-            errors_ = np.log([_float(r["error"]) for r in ladder_rows])
+            steps = np.log([number(r["step"]) for r in ladder_rows])
+            errors_ = np.log([number(r["error"]) for r in ladder_rows])
             orders[" ".join(key)] = float(np.polyfit(steps, errors_, 1)[0])
     return orders
 
@@ -208,8 +207,8 @@ def work_precision_figure(rows: list[dict], path: Path, title: str) -> Path:
 
     fig, axis = plt.subplots(figsize=(7, 5))
     for key in sorted({(r["engine"], r["solver"]) for r in rows}):
-        points = sorted((_float(r["wall_time_s"]), _float(r["error"])) for r in rows
-                        if (r["engine"], r["solver"]) == key and r["status"] == "success" and _float(r["error"]) > 0)
+        points = sorted((number(r["wall_time_s"]), number(r["error"])) for r in rows
+                        if (r["engine"], r["solver"]) == key and r["status"] == "success" and number(r["error"]) > 0)
         if points:
             axis.loglog(*zip(*points), "o-", label=" ".join(key))
     axis.set_xlabel("wall time [s]")
@@ -232,14 +231,14 @@ def markdown(summary: dict, rows: list[dict]) -> str:
     lines += ["", "| engine | solver | step [s] | tolerance | error | wall time [s] | force evaluations | status |",
               "|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        error = _float(r["error"])
+        error = number(r["error"])
         lines.append(f"| {r['engine']} | {r['solver']} | {r['step']} | {r['tolerance']} | "
-                     f"{error:.2e} | {_float(r['wall_time_s']):.3g} | {r['force_evaluations']} | {r['status']} |")
+                     f"{error:.2e} | {number(r['wall_time_s']):.3g} | {r['force_evaluations']} | {r['status']} |")
     lines += ["", "Cheapest setting reaching each target:", ""]
     for target, best in summary["cheapest"].items():
         text = "none of the settings" if best is None else (
             f"{best['engine']} {best['solver']} step {best['step'] or '-'} tolerance {best['tolerance'] or '-'}: "
-            f"error {_float(best['error']):.2e} in {_float(best['wall_time_s']):.3g} s")
+            f"error {number(best['error']):.2e} in {number(best['wall_time_s']):.3g} s")
         lines.append(f"* {target}: {text}")
     if summary["orders"]:
         lines += ["", "Observed orders (slope of log error against log step): "
@@ -272,31 +271,3 @@ def _describe(run: RunSettings) -> str:
     step, tolerance = ladder(run)[0]
     what = f"tolerance {tolerance:g}" if run.adaptive else f"step {step:g} s"
     return f"{run.engine} {run.method}, {what}"
-
-
-def _text(value) -> str:
-    return "" if value is None else repr(float(value)) if isinstance(value, float) else str(value)
-
-
-def _float(value) -> float:
-    try:
-        return float(value)
-    except (TypeError, ValueError):
-        return math.nan
-
-
-def _read_rows(path: Path) -> list[dict]:
-    if not path.exists():
-        return []
-    with path.open(newline="") as handle:
-        return list(csv.DictReader(handle))
-
-
-def _append_row(path: Path, row: dict) -> None:
-    new = not path.exists()
-    with path.open("a", newline="") as handle:
-        writer = csv.DictWriter(handle, fieldnames=COLUMNS)
-        if new:
-            writer.writeheader()
-        writer.writerow({k: _text(v) if isinstance(v, float) else v for k, v in row.items()})
-        handle.flush()

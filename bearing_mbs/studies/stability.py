@@ -1,0 +1,687 @@
+r"""Stability suite: which engine and solver survive stiff and extreme bearing cases, and up to which step.
+
+``bearing-mbs stability SCENARIO.toml --out DIR [--reduced]`` varies a bearing scenario (:data:`CASES`: contact
+stiffness ×0.01 to ×100, v_reg 0.1 to 1e-4 m/s, restitution 0.1 and 1, speed to 10 000 rpm, zero and 5× load,
+preload and 200 µm clearance, Z = 8 and 30, a full complement) and, for every engine and solver of
+:data:`SOLVERS`, runs short **probes** from the scenario's start: the ring centred, the load applied at once, so
+the first load peak (about twice the static load, more with clearance) is inside every probe. A probe lasts
+1.25 × the advisor's time of that peak (at least 0.4 ms), and for an explicit method at least 2000 steps of its
+largest rung, but no more than 2 ms (longer light-load runs drift apart chaotically, whatever the step).
+
+A probe **passes** when
+
+1. the run guards do not stop it (NaN or blow-up, penetration, solver failure);
+2. its energy audit closes (:func:`bearing_mbs.analysis.energy_balance_error`): below ``audit_explicit`` (1e-3;
+   ``audit_implicit`` = 1e-2 for generalized-alpha, whose ρ∞ < 1 dissipates numerically) outright, or up to 5e-2
+   if it converges at the method's order against the 4× finer run (a first-order method closes its audit only to
+   O(h) where it is perfectly stable);
+3. its slip is not spurious against a 4× finer setting (:func:`.spurious_slip.compare_slips`: loaded friction
+   pairs, slip speeds within 0.1 v_reg at every output instant).
+
+Per solver kind:
+
+* fixed-step explicit methods: a ladder of steps :math:`h_k = h_{adv}\,2^{k/2}` anchored at the advisor's
+  stability limit :math:`h_{adv}` (:mod:`bearing_mbs.advisor`), walked up from :math:`k = 0` while probes pass
+  (down while they fail); the **measured limit** is the largest passing rung. The 4× finer partner of rung k
+  is rung k − 4, so runs are shared;
+* generalized-alpha: the same walk by factors of 2 from ``implicit_step`` (1e-5 s);
+* adaptive methods: tolerances from ``loose_tolerance`` (1e-4) down by 100 to ``tightest_tolerance`` (1e-8)
+  until a probe passes (the finer partner: tolerance / 4⁵; Exudyn's DOPRI5 at 1e-13 did not finish here).
+
+Outputs, written as each cell finishes (a re-run skips finished cells): ``DIR/stability.csv``,
+``DIR/stability.md`` (the table), ``DIR/stability.png`` (the heat map), ``DIR/advised_vs_measured.png`` and
+``DIR/summary.json`` (with the fraction of cells where the advisor's limit is within a factor of 2 of the
+measured one).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from ..advisor import advise
+from ..analysis import energy_balance_error
+from ..builders import build_scene
+from ..engines import simulate
+from ..progress import ProgressMeter
+from ..runner import write_json
+from .table import append_row, number, read_rows, text
+from ..spec import Spec, SpecError, spec_from_mapping, to_mapping
+from .spurious_slip import compare_slips
+
+log = logging.getLogger(__name__)
+
+CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
+FORCE_GROUPS = ("inner_race", "outer_race", "pocket")  # the groups whose stiffness a case scales
+
+
+@dataclass(frozen=True)
+class Case:
+    """A variation of the base scenario: ``change`` edits its mapping (a copy) in place."""
+
+    name: str
+    description: str
+    change: Callable[[dict, Spec], None] = lambda data, spec: None
+
+
+def _contact(data, key, value, groups=CONTACT_GROUPS):
+    for group in groups:
+        data["contact"][group][key] = value
+
+
+def _stiffness(factor):
+    def change(data, spec):
+        from ..builders.bearing import group_law
+        from ..geometry import BearingGeometry
+
+        geometry = BearingGeometry.from_spec(spec.bearing)
+        for group in FORCE_GROUPS:
+            law = group_law(spec, geometry, group)
+            data["contact"][group].update(stiffness_model="given", stiffness=factor * law.stiffness,
+                                          exponent=law.exponent)
+    return change
+
+
+def _raceways(clearance=None, rollers=None, roller_diameter=None, pocket_clearance=None):
+    """Change the raceway description to pitch diameter and clearance (so the other numbers follow)."""
+    def change(data, spec):
+        bearing = data["bearing"]
+        for key in ("inner_race_diameter", "outer_race_diameter"):
+            bearing.pop(key, None)
+        bearing["pitch_diameter"] = spec.bearing.pitch
+        bearing["diametral_clearance"] = spec.bearing.clearance if clearance is None else clearance
+        if rollers is not None:
+            bearing["rollers"] = rollers
+        if roller_diameter is not None:
+            bearing["roller_diameter"] = roller_diameter(spec)
+        if pocket_clearance is not None:
+            bearing["pocket_clearance"] = pocket_clearance
+    return change
+
+
+def _speed(rpm):
+    def change(data, spec):
+        data["drive"].update(kind="speed", profile="constant", speed_rpm=rpm)
+    return change
+
+
+def _load(factor):
+    def change(data, spec):
+        data["load"]["radial"] = factor * spec.load.radial
+    return change
+
+
+def _thirty_rollers(spec):
+    """A roller diameter that lets 30 rollers and their pockets fit: 80 % of the chord, less the pocket play."""
+    chord = spec.bearing.pitch * math.sin(math.pi / 30)
+    return math.floor((0.8 * chord - 2 * spec.bearing.pocket_clearance) * 1e4) / 1e4
+
+
+def _full_complement(data, spec):
+    """No cage, and as many rollers as fit on the pitch circle with 0.4 mm or more between neighbours."""
+    d_w = spec.bearing.roller_diameter
+    rollers = int(math.pi / math.asin((d_w + 4e-4) / spec.bearing.pitch))
+    _raceways(rollers=rollers, pocket_clearance=1e-4)(data, spec)
+    data["cage"]["model"] = "none"
+
+
+CASES = (
+    Case("nominal", "the base scenario"),
+    Case("stiffness x0.01", "raceway and pocket stiffness x0.01", _stiffness(0.01)),
+    Case("stiffness x0.1", "raceway and pocket stiffness x0.1", _stiffness(0.1)),
+    Case("stiffness x10", "raceway and pocket stiffness x10", _stiffness(10.0)),
+    Case("stiffness x100", "raceway and pocket stiffness x100", _stiffness(100.0)),
+    Case("v_reg 1e-1", "friction regularisation speed 0.1 m/s", lambda d, s: _contact(d, "regularisation_speed", 0.1)),
+    Case("v_reg 1e-3", "friction regularisation speed 1e-3 m/s",
+         lambda d, s: _contact(d, "regularisation_speed", 1e-3)),
+    Case("v_reg 1e-4", "friction regularisation speed 1e-4 m/s",
+         lambda d, s: _contact(d, "regularisation_speed", 1e-4)),
+    Case("restitution 0.1", "restitution 0.1 (strong contact damping)", lambda d, s: _contact(d, "restitution", 0.1)),
+    Case("restitution 1.0", "restitution 1 (no contact damping)", lambda d, s: _contact(d, "restitution", 1.0)),
+    Case("5000 rpm", "inner ring at 5000 rpm", _speed(5000.0)),
+    Case("10000 rpm", "inner ring at 10 000 rpm", _speed(10000.0)),
+    Case("zero load", "no radial load (the ring's weight only)", _load(0.0)),
+    Case("5x load", "five times the radial load", _load(5.0)),
+    Case("preload", "diametral preload 40 µm", _raceways(clearance=-4e-5)),
+    Case("clearance 200 µm", "diametral clearance 200 µm", _raceways(clearance=2e-4)),
+    Case("Z = 8", "8 rollers", _raceways(rollers=8)),
+    Case("Z = 30", "30 smaller rollers", _raceways(rollers=30, roller_diameter=_thirty_rollers)),
+    Case("full complement", "no cage, rollers side by side", _full_complement),
+)
+CASE_NAMES = tuple(case.name for case in CASES)
+#: The reduced suite of the default tests.
+REDUCED_CASES = ("nominal", "stiffness x100", "v_reg 1e-1", "restitution 0.1", "clearance 200 µm")
+
+#: (engine, method) of the full suite, and of the reduced one.
+SOLVERS = (
+    ("reference", "central_difference"), ("reference", "velocity_verlet"), ("reference", "rk4"),
+    ("reference", "dopri5"), ("exudyn", "generalized_alpha"), ("exudyn", "rk44"), ("exudyn", "dopri5"),
+)
+REDUCED_SOLVERS = (("reference", "central_difference"), ("reference", "velocity_verlet"), ("reference", "rk4"),
+                   ("exudyn", "generalized_alpha"))
+
+#: Convergence orders, for the energy audit's convergence check (adaptive methods: order 1 in the tolerance).
+ORDERS = {("reference", "central_difference"): 1, ("reference", "velocity_verlet"): 2, ("reference", "rk4"): 4,
+          ("exudyn", "rk44"): 4, ("exudyn", "generalized_alpha"): 2, ("exudyn", "trapezoidal_index2"): 2,
+          ("exudyn", "velocity_verlet"): 2, ("exudyn", "rk33"): 3, ("exudyn", "rk67"): 6}
+
+ADAPTIVE = {("reference", "dopri5"), ("exudyn", "dopri5"), ("exudyn", "ode23"), ("exudyn", "dverk6")}
+IMPLICIT = {("exudyn", "generalized_alpha"), ("exudyn", "trapezoidal_index2")}
+
+
+@dataclass(frozen=True)
+class StabilitySettings:
+    """Probe and ladder settings.
+
+    probe_time [s]: None = 1.25 × the advisor's time of the first load peak, clamped to
+    [min_probe_time, max_probe_time]. output_interval [s]: output spacing of the probes (the slip comparison
+    uses every output instant). audit_explicit, audit_implicit: energy-audit error that passes outright; up to
+    audit_largest it passes if it converges at the method's order against the 4× finer run (at most
+    2·4^p times the finer run's). min_probe_steps: an explicit cell's probes last at least this many steps of
+    its top rung (4× the advice), so that a slowly growing instability shows, but no longer than max_probe_time
+    (longer light-load runs diverge chaotically, whatever the step).
+    refinement: the finer partner's step ratio (4). up_rungs, down_rungs: how far the walk may go from the
+    advice (rungs of √2). implicit_step [s]: generalized-alpha's first rung. loose_tolerance: adaptive methods'
+    first tolerance. max_steps: per-engine step budget of one probe (a probe above it is not run).
+    """
+
+    probe_time: float | None = None
+    min_probe_time: float = 4e-4
+    max_probe_time: float = 2e-3
+    output_interval: float = 1e-5
+    audit_explicit: float = 1e-3
+    audit_implicit: float = 1e-2
+    audit_largest: float = 5e-2
+    min_probe_steps: int = 2000
+    refinement: int = 4
+    up_rungs: int = 4
+    down_rungs: int = 6
+    implicit_step: float = 1e-5
+    loose_tolerance: float = 1e-4
+    tightest_tolerance: float = 1e-8
+    max_steps: dict = field(default_factory=lambda: {"reference": 3_000_000, "exudyn": 150_000})
+    max_probe_wall_time: float = 120.0
+
+
+# --------------------------------------------------------------------------------------------------------------
+# Probes
+# --------------------------------------------------------------------------------------------------------------
+
+
+@dataclass
+class Probe:
+    """One run: ``setting`` is the step [s] (the tolerance for adaptive methods)."""
+
+    setting: float
+    status: str  # "ok" (guards passed), "failed" (a guard or the solver stopped it), "skipped" (over budget)
+    reason: str = ""
+    audit: float = math.nan
+    wall_time_s: float = 0.0
+    steps: int = 0
+    message: str = ""
+    result: object = None
+
+
+class BudgetExceeded(RuntimeError):
+    """Raised by :class:`WallClockBudget` to abandon a probe."""
+
+
+class WallClockBudget(ProgressMeter):
+    """A progress meter that abandons a run after ``seconds`` of wall time."""
+
+    def __init__(self, seconds: float):
+        self.seconds, self.exceeded = seconds, False
+
+    def start(self, total: float, description: str = "") -> None:
+        self.started = time.perf_counter()
+
+    def update(self, value: float) -> None:
+        if time.perf_counter() - self.started > self.seconds:
+            self.exceeded = True
+            raise BudgetExceeded(f"over {self.seconds:g} s")
+
+
+def failure_reason(message: str) -> str:
+    """The guard that stopped a run, from its message."""
+    if "non-finite" in message:
+        return "NaN"
+    if "faster than speed_limit" in message:
+        return "blow-up"
+    if "penetrates" in message:
+        return "penetration"
+    return "solver failure"
+
+
+class CellRunner:
+    """Runs the probes of one case and solver, caching them by setting."""
+
+    def __init__(self, spec: Spec, scene, engine: str, method: str, end_time: float, settings: StabilitySettings):
+        self.spec, self.scene, self.engine, self.method = spec, scene, engine, method
+        self.end_time, self.settings = end_time, settings
+        self.adaptive, self.implicit = (engine, method) in ADAPTIVE, (engine, method) in IMPLICIT
+        self.audit_limit = settings.audit_implicit if self.implicit else settings.audit_explicit
+        self.probes: dict[float, Probe] = {}
+        self.advice = advise(scene)
+
+    def solver(self, setting: float):
+        solver = dataclasses.replace(self.spec.solver, engine=self.engine,
+                                     output_interval=self.settings.output_interval)
+        active = getattr(solver, self.engine)
+        if self.adaptive:
+            changed = dataclasses.replace(active, method=self.method, tolerance=setting,
+                                          step=self.settings.output_interval)
+        else:
+            changed = dataclasses.replace(active, method=self.method, step=setting)
+            if self.engine == "reference":
+                changed = dataclasses.replace(changed, contact_step=None)
+        return dataclasses.replace(solver, **{self.engine: changed})
+
+    def expected_steps(self, setting: float) -> float:
+        if self.adaptive:  # stability-bound: about one step per advised limit
+            limit = self.advice.limit(self.engine, self.method) if self.advice.applies else None
+            return self.end_time / limit if limit and math.isfinite(limit) else 0.0
+        return self.end_time / setting
+
+    def run(self, setting: float) -> Probe:
+        key = float(f"{setting:.12g}")
+        if key in self.probes:
+            return self.probes[key]
+        if self.expected_steps(setting) > self.settings.max_steps[self.engine]:
+            probe = Probe(setting, "skipped", "over the step budget")
+        else:
+            started = time.perf_counter()
+            budget = WallClockBudget(self.settings.max_probe_wall_time)
+            try:
+                result = simulate(self.scene, self.solver(setting), self.end_time, budget)
+            except BudgetExceeded:
+                result = None
+            wall = time.perf_counter() - started
+            if result is None or budget.exceeded:
+                probe = Probe(setting, "skipped", "over the time budget", wall_time_s=wall)
+            elif result.success:
+                probe = Probe(setting, "ok", audit=energy_balance_error(self.scene, result), wall_time_s=wall,
+                              steps=result.stats.steps, result=result)
+            else:
+                probe = Probe(setting, "failed", failure_reason(result.message), wall_time_s=wall,
+                              steps=result.stats.steps, message=result.message)
+        self.probes[key] = probe
+        log.info("%s %s %s=%.3g: %s %s", self.engine, self.method, "tolerance" if self.adaptive else "step",
+                 setting, probe.status, probe.reason)
+        return probe
+
+    def finer(self, setting: float) -> float:
+        refinement = self.settings.refinement
+        return setting / refinement**5 if self.adaptive else setting / refinement
+
+    def verdict(self, setting: float) -> tuple[str, str]:
+        """("pass" | "fail" | "unknown", reason) of one setting."""
+        probe = self.run(setting)
+        if probe.status == "skipped":
+            return "unknown", probe.reason
+        if probe.status == "failed":
+            return "fail", probe.reason
+        if not probe.audit <= self.settings.audit_largest:
+            return "fail", "energy audit"
+        partner = self.run(self.finer(setting))
+        if partner.status == "skipped":
+            return "unknown", "finer run over the " + partner.reason.split("over the ")[-1]
+        if partner.status == "failed":
+            return "fail", f"finer run: {partner.reason}"
+        # above the threshold the audit must at least converge at the method's order (a first-order method closes
+        # its audit only to O(h) even where it is stable)
+        allowed = 2.0 * self.settings.refinement ** ORDERS.get((self.engine, self.method), 1)
+        if probe.audit > self.audit_limit and not probe.audit <= allowed * partner.audit:
+            return "fail", "energy audit"
+        found = compare_slips(self.scene, probe.result, partner.result)
+        if found["ratio"] > 1.0:
+            return "fail", "spurious slip"
+        return "pass", ""
+
+
+def walk(runner: CellRunner, rungs: Callable[[int], float], up: int, down: int) -> dict:
+    """Walk a ladder from rung 0: up while passing, down while failing. Returns the largest passing setting,
+    the smallest failing one above it (with its reason), and every verdict."""
+    verdicts = {}
+
+    def judge(k):
+        verdicts[k] = runner.verdict(rungs(k))
+        return verdicts[k]
+
+    state, reason = judge(0)
+    if state == "pass":
+        k = 0
+        while k < up:
+            state, reason = judge(k + 1)
+            if state != "pass":
+                break
+            k += 1
+        passing = k
+    elif state == "fail":
+        k = 0
+        while k > -down:
+            state, reason = judge(k - 1)
+            k -= 1
+            if state != "fail":
+                break
+        passing = k if verdicts[k][0] == "pass" else None
+    else:
+        passing = None
+    failing = min((j for j, v in verdicts.items() if v[0] == "fail" and (passing is None or j > passing)), default=None)
+    return {
+        "largest_pass": None if passing is None else rungs(passing),
+        "first_fail": None if failing is None else rungs(failing),
+        "fail_reason": "" if failing is None else verdicts[failing][1],
+        "unknown": [verdicts[j][1] for j in verdicts if verdicts[j][0] == "unknown"],
+        "verdicts": {rungs(j): v for j, v in sorted(verdicts.items())},
+        "capped": passing is not None and passing >= up,
+    }
+
+
+def run_cell(spec: Spec, scene, engine: str, method: str, end_time: float, settings: StabilitySettings) -> dict:
+    """One case × solver: the ladder walk and its summary row."""
+    runner = CellRunner(spec, scene, engine, method, end_time, settings)
+    advice = runner.advice
+    advised = advice.limit(engine, method) if advice.applies else None
+    row = {"engine": engine, "solver": method, "advised_limit": advised, "largest_pass": None,
+           "first_fail": None, "fail_reason": "", "ratio": None, "verdict": "", "kind": "explicit"}
+    if runner.implicit:
+        row["kind"] = "implicit"
+        found = walk(runner, lambda k: settings.implicit_step * 2.0**k, up=4, down=3)
+    elif runner.adaptive:
+        row["kind"] = "adaptive"
+        tolerances = 10.0 ** -np.arange(round(-math.log10(settings.loose_tolerance)),
+                                        round(-math.log10(settings.tightest_tolerance)) + 1, 2)
+        found = _tolerance_walk(runner, list(tolerances))
+    else:
+        if advised is None or not math.isfinite(advised) or advised <= 0:
+            row["verdict"] = "no advice"
+            return row
+        found = walk(runner, lambda k: advised * 2.0 ** (k / 2), up=settings.up_rungs, down=settings.down_rungs)
+    row.update({key: found[key] for key in ("largest_pass", "first_fail", "fail_reason")})
+    if found["largest_pass"] is None:
+        row["verdict"] = "unknown: " + found["unknown"][0] if found["unknown"] else f"fail: {found['fail_reason']}"
+    else:
+        row["verdict"] = "pass" + (" (ladder top)" if found["capped"] else "")
+    if row["kind"] == "explicit" and row["largest_pass"] is not None:
+        row["ratio"] = row["largest_pass"] / advised
+    row["wall_time_s"] = sum(p.wall_time_s for p in runner.probes.values())
+    row["probes"] = len(runner.probes)
+    row["ladder"] = "; ".join(f"{s:.3g}:{v[0]}{'(' + v[1] + ')' if v[1] else ''}" for s, v in found["verdicts"].items())
+    return row
+
+
+def _tolerance_walk(runner: CellRunner, tolerances: list[float]) -> dict:
+    """Adaptive methods: from the loosest tolerance down until one passes."""
+    verdicts = {}
+    passing = None
+    for tolerance in tolerances:
+        verdicts[tolerance] = runner.verdict(tolerance)
+        if verdicts[tolerance][0] == "pass":
+            passing = tolerance
+            break
+        if verdicts[tolerance][0] == "unknown":
+            break
+    failing = [t for t, v in verdicts.items() if v[0] == "fail"]
+    return {"largest_pass": passing, "first_fail": failing[-1] if failing else None,
+            "fail_reason": verdicts[failing[-1]][1] if failing else "",
+            "unknown": [v[1] for v in verdicts.values() if v[0] == "unknown"], "verdicts": verdicts, "capped": False}
+
+
+# --------------------------------------------------------------------------------------------------------------
+# The suite
+# --------------------------------------------------------------------------------------------------------------
+
+
+def case_spec(base: Spec, case: Case) -> Spec:
+    data = _mapping(base)
+    case.change(data, base)
+    data["scenario"]["name"] = f"{base.scenario.name} [{case.name}]"
+    return spec_from_mapping(data)
+
+
+def _mapping(spec: Spec) -> dict:
+    """The spec as a plain mapping that validates again: no study section, no other model's sections."""
+    from ..spec import MODEL_SECTIONS
+
+    data = json.loads(json.dumps(to_mapping(spec)))
+    data.pop("convergence", None)
+    for model, sections in MODEL_SECTIONS.items():
+        if model != spec.scenario.model:
+            for section in sections:
+                data.pop(section, None)
+    return data
+
+
+def _with_end_time(spec: Spec, end_time: float) -> Spec:
+    data = _mapping(spec)
+    data["scenario"]["end_time"] = end_time
+    data["analysis"]["start"] = end_time / 2
+    return spec_from_mapping(data)
+
+
+def _round_up(value: float, quantum: float) -> float:
+    return math.ceil(value / quantum * (1 - 1e-12)) * quantum
+
+
+def probe_time(spec: Spec, scene, settings: StabilitySettings) -> float:
+    if settings.probe_time is not None:
+        return settings.probe_time
+    advice = advise(scene)
+    peak = advice.operating_point.get("first_peak_time", 0.0) if advice.applies else 0.0
+    value = min(max(1.25 * peak, settings.min_probe_time), settings.max_probe_time)
+    return _round_up(value, settings.output_interval)
+
+
+COLUMNS = ("case", "engine", "solver", "kind", "probe_time", "advised_limit", "largest_pass", "ratio", "first_fail",
+           "fail_reason", "verdict", "wall_time_s", "probes", "ladder")
+
+
+def study(base: Spec, directory: str | Path, cases=CASE_NAMES, solvers=SOLVERS,
+          settings: StabilitySettings = StabilitySettings(), figures: bool = True) -> dict:
+    """Run the stability suite of ``base`` into ``directory``; returns the summary."""
+    if base.scenario.model != "bearing":
+        raise SpecError("scenario.model", base.scenario.model, "the stability suite varies a bearing scenario")
+    unknown = [name for name in cases if name not in CASE_NAMES]
+    if unknown:
+        raise SpecError("cases", unknown, f"must be among: {', '.join(CASE_NAMES)}")
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    table = directory / "stability.csv"
+    rows = read_rows(table)
+    done = {(r["case"], r["engine"], r["solver"]) for r in rows}
+    by_name = {case.name: case for case in CASES}
+    for name in cases:
+        if all((name, engine, method) in done for engine, method in solvers):
+            continue
+        spec = case_spec(base, by_name[name])
+        end_time = probe_time(spec, build_scene(spec), settings)
+        spec = _with_end_time(spec, end_time)
+        scene = build_scene(spec)
+        advice = advise(scene)
+        for engine, method in solvers:
+            if (name, engine, method) in done:
+                continue
+            duration, cell_spec = end_time, spec
+            advised = advice.limit(engine, method) if advice.applies else None
+            kind = (engine, method)
+            if kind not in ADAPTIVE and kind not in IMPLICIT and advised and math.isfinite(advised):
+                top = advised * 2.0 ** (settings.up_rungs / 2)
+                duration = min(max(end_time, _round_up(settings.min_probe_steps * top, settings.output_interval)),
+                               max(end_time, settings.max_probe_time))
+                cell_spec = _with_end_time(spec, duration)
+            row = {"case": name, "probe_time": duration,
+                   **run_cell(cell_spec, scene, engine, method, duration, settings)}
+            rows.append({k: text(row.get(k)) for k in COLUMNS})
+            append_row(table, rows[-1], COLUMNS)
+            log.info("%s | %s %s: %s (advised %s, largest pass %s)", name, engine, method, row["verdict"],
+                     row["advised_limit"], row["largest_pass"])
+    rows = [r for r in rows if r["case"] in cases and (r["engine"], r["solver"]) in set(solvers)]
+    summary = summarize(rows)
+    summary["scenario"] = base.scenario.name
+    summary["settings"] = {k: v for k, v in dataclasses.asdict(settings).items()}
+    write_json(directory / "summary.json", summary)
+    (directory / "stability.md").write_text(markdown(summary, rows))
+    if figures:
+        heat_map(rows, directory / "stability.png", f"{base.scenario.name}: measured / advised step limit (explicit); "
+                 "passing h or tol, or why none passed (others)")
+        advised_figure(rows, directory / "advised_vs_measured.png", base.scenario.name)
+    return summary
+
+
+def summarize(rows: list[dict]) -> dict:
+    """Counts, and the fraction of explicit cells whose measured limit is within a factor of 2 of the advice."""
+    measured = [r for r in rows if r["kind"] == "explicit" and number(r["ratio"]) > 0]
+    within = [r for r in measured if 0.5 <= number(r["ratio"]) <= 2.0]
+    return {
+        "cells": len(rows),
+        "explicit_cells_measured": len(measured),
+        "within_factor_2": len(within),
+        "fraction_within_factor_2": len(within) / len(measured) if measured else None,
+        "outside_factor_2": [f"{r['case']} / {r['engine']} {r['solver']}: {number(r['ratio']):.3g}"
+                             for r in measured if r not in within],
+        "failing_cells": [f"{r['case']} / {r['engine']} {r['solver']}: {r['verdict']}" for r in rows
+                          if not r["verdict"].startswith("pass")],
+    }
+
+
+def cell_text(r: dict) -> str:
+    """One cell of the overview: measured/advised for explicit methods, the passing step or tolerance otherwise,
+    or why nothing passed."""
+    if not r["verdict"].startswith("pass"):
+        return r["verdict"].replace("unknown: ", "not run: ")
+    if r["kind"] == "explicit":
+        return f"{number(r['ratio']):.2f}" + (" (top)" if "ladder top" in r["verdict"] else "")
+    prefix = "h" if r["kind"] == "implicit" else "tol"
+    return f"{prefix} {_fmt(r['largest_pass'])}" + (" (top)" if "ladder top" in r["verdict"] else "")
+
+
+def overview(rows: list[dict]) -> str:
+    """Cases × solvers in one table (see :func:`cell_text`)."""
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    solvers = list(dict.fromkeys((r["engine"], r["solver"]) for r in rows))
+    cells = {(r["case"], (r["engine"], r["solver"])): cell_text(r) for r in rows}
+    lines = ["| case | " + " | ".join(f"{e} {m}" for e, m in solvers) + " |",
+             "|---|" + "---|" * len(solvers)]
+    for case in cases:
+        lines.append(f"| {case} | " + " | ".join(cells.get((case, s), "") for s in solvers) + " |")
+    return "\n".join(lines)
+
+
+def markdown(summary: dict, rows: list[dict]) -> str:
+    lines = [
+        f"# Stability suite: {summary['scenario']}", "",
+        "Overview: measured / advised stability limit for fixed-step explicit methods (rungs of √2, so 0.71, 1, "
+        "1.41 …); the largest passing step of generalized-alpha (h) and the largest passing tolerance of adaptive "
+        "methods (tol); otherwise the verdict. (top): the top of the ladder passed too.", "",
+        overview(rows), "",
+        "Largest passing step against the advisor's estimated stability limit (explicit methods; rungs of √2 from "
+        "the advice), the step (generalized-alpha) or tolerance (adaptive methods) that passes, and why the next "
+        "one fails.", "",
+        "| case | engine | solver | probe [ms] | advised limit [s] | largest passing | measured / advised | "
+        "fails at | reason | verdict |",
+        "|---|---|---|---:|---:|---:|---:|---:|---|---|",
+    ]
+    for r in rows:
+        ratio = number(r["ratio"])
+        lines.append(
+            f"| {r['case']} | {r['engine']} | {r['solver']} | {1e3 * number(r['probe_time']):.2g} | "
+            f"{_fmt(r['advised_limit'])} | {_fmt(r['largest_pass'])} | "
+            f"{'' if math.isnan(ratio) else f'{ratio:.2f}'} | {_fmt(r['first_fail'])} | {r['fail_reason']} | "
+            f"{r['verdict']} |")
+    fraction = summary["fraction_within_factor_2"]
+    lines += ["", f"Advisor within a factor of 2 of the measured limit: {summary['within_factor_2']} of "
+              f"{summary['explicit_cells_measured']} explicit cells"
+              + (f" ({100 * fraction:.0f} %)." if fraction is not None else ".")]
+    if summary["outside_factor_2"]:
+        lines.append("Outside: " + "; ".join(summary["outside_factor_2"]) + ".")
+    return "\n".join(lines) + "\n"
+
+
+def heat_map(rows: list[dict], path: Path, title: str) -> Path:
+    """Cases × solvers. Explicit cells: log2(measured/advised) on a diverging scale; others: pass or fail."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import TwoSlopeNorm
+
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    solvers = list(dict.fromkeys(f"{r['engine']}\n{r['solver']}" for r in rows))
+    values = np.full((len(cases), len(solvers)), np.nan)
+    fig, axis = plt.subplots(figsize=(1.3 * len(solvers) + 3, 0.42 * len(cases) + 1.8))
+    norm = TwoSlopeNorm(vmin=-2.0, vcenter=0.0, vmax=2.0)
+    for r in rows:
+        i, j = cases.index(r["case"]), solvers.index(f"{r['engine']}\n{r['solver']}")
+        ratio = number(r["ratio"])
+        if r["kind"] == "explicit" and ratio > 0:
+            values[i, j] = math.log2(ratio)
+            text = f"{ratio:.2g}"
+        else:
+            passed = r["verdict"].startswith("pass")
+            colour = "#c7e9c0" if passed else "#d9d9d9" if r["verdict"].startswith("unknown") else "#fcbba1"
+            axis.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, color=colour))
+            if r["kind"] == "implicit" and passed:
+                text = f"h {_fmt(r['largest_pass'])}"
+            elif r["kind"] == "adaptive" and passed:
+                text = f"tol {_fmt(r['largest_pass'])}"
+            elif r["verdict"].startswith("unknown"):
+                text = "not run (budget)"
+            else:
+                text = r["verdict"].replace("fail: ", "")[:22]
+        axis.text(j, i, text, ha="center", va="center", fontsize=7)
+    image = axis.imshow(np.ma.masked_invalid(values), cmap="RdBu", norm=norm, aspect="auto")
+    axis.set_xticks(range(len(solvers)), solvers, fontsize=7)
+    axis.set_yticks(range(len(cases)), cases, fontsize=8)
+    axis.set_xlim(-0.5, len(solvers) - 0.5)
+    axis.set_ylim(len(cases) - 0.5, -0.5)
+    bar = fig.colorbar(image, ax=axis, fraction=0.04)
+    bar.set_label("log2(measured / advised limit)")
+    axis.set_title(title, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def advised_figure(rows: list[dict], path: Path, name: str) -> Path:
+    """The advisor's limit beside the measured one, every explicit cell: the band is the factor of 2."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axis = plt.subplots(figsize=(6, 5))
+    cells = [r for r in rows if r["kind"] == "explicit" and number(r["ratio"]) > 0]
+    markers = dict(zip(sorted({f"{r['engine']} {r['solver']}" for r in cells}), "osD^v<>"))
+    for label, marker in markers.items():
+        points = [(number(r["advised_limit"]), number(r["largest_pass"])) for r in cells
+                  if f"{r['engine']} {r['solver']}" == label]
+        axis.loglog(*zip(*points), marker, label=label, alpha=0.75, markerfacecolor="none")
+    if cells:
+        low = min(number(r["advised_limit"]) for r in cells) / 3
+        high = max(number(r["advised_limit"]) for r in cells) * 3
+        line = np.array([low, high])
+        axis.loglog(line, line, "k-", lw=0.8, label="measured = advised")
+        axis.fill_between(line, line / 2, 2 * line, color="0.85", zorder=0, label="factor of 2")
+    axis.set_xlabel("advised stability limit [s]")
+    axis.set_ylabel("largest passing step, measured [s]")
+    axis.set_title(f"{name}: step advisor against the stability suite", fontsize=9)
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def _fmt(value) -> str:
+    figure = number(value)
+    return "" if math.isnan(figure) else f"{figure:.3g}"

@@ -1,0 +1,77 @@
+"""The spurious-skidding trap (EXUDYN_NOTES.md, ARCHITECTURE.md): RK4 above the friction stability limit stays
+bounded but slips wrongly, and the guards catch it.
+
+Case: the seed bearing at its nominal 68 kN (scenarios/seed_hss_steady.toml), erf friction with μ = 0.1 and
+v_reg = 0.01 m/s on every contact, 2 ms from the scenario's start (the load arrives at once; its first peak,
+twice the static load, comes at about 0.35 ms), means over the second millisecond. The advisor's RK4 limit is
+1.74e-7 s (bearing-mbs advise).
+
+References and tolerances:
+* the wrong setting, RK4 at 1e-6 s (5.7 × the limit), against RK4 at 1.25e-7 s (below it): the run succeeds (no
+  guard stops it), yet its largest roller slip ratio is more than 5 times the converged one (measured: 2.5e-3
+  against 1.6e-4), and the energy audit is off by more than 1 % (measured 10 %; the converged run closes it to
+  1e-10, bound 1e-8);
+* the spurious-slip report (step halved) flags the wrong setting: slips differ by more than 0.1 v_reg = 1e-3 m/s
+  at some output instant (measured: about 2e-2 m/s), and names the time, the pair and the fix; on the setting below
+  the advice the largest change is below 1e-5 m/s (1 % of the tolerance);
+* the engine's step warning is recorded for the wrong setting only;
+* Exudyn's RK44 (the same tableau, the same compiled forces) falls into the same trap: bounded, flagged, its slip
+  more than 5 times the converged one.
+"""
+
+import pytest
+
+from bearing_mbs.builders import build_scene
+from bearing_mbs.cases import SCENARIOS
+from bearing_mbs.engines import simulate
+from bearing_mbs.runner import summarize
+from bearing_mbs.spec import load_spec
+from bearing_mbs.studies.spurious_slip import check_spurious_slip
+
+END = 2e-3
+FRICTION = [f"contact.{group}.{key}={value}" for group in ("inner_race", "outer_race", "pocket")
+            for key, value in (("friction_law", "erf"), ("friction_coefficient", 0.1), ("regularisation_speed", 0.01))]
+ADVISED_RK4 = 1.74e-7
+
+
+def spec_for(engine, method, step):
+    return load_spec(SCENARIOS / "seed_hss_steady.toml", FRICTION + [
+        f"scenario.end_time={END}", f"analysis.start={END / 2}", "solver.output_interval=1e-5",
+        f"solver.engine={engine}", f"solver.{engine}.method={method}", f"solver.{engine}.step={step}"])
+
+
+def run(engine, method, step):
+    spec = spec_for(engine, method, step)
+    scene = build_scene(spec)
+    result = simulate(scene, spec.solver, END)
+    assert result.success, result.message  # bounded: no guard stops either run
+    return spec, scene, result
+
+
+@pytest.fixture(scope="module")
+def converged():
+    return run("reference", "rk4", 1.25e-7)
+
+
+@pytest.mark.parametrize("engine, method", [("reference", "rk4"), ("exudyn", "rk44")])
+def test_rk4_above_the_advice_skids_spuriously_and_is_caught(converged, engine, method):
+    spec, scene, wrong = run(engine, method, 1e-6)
+    assert 1e-6 > 5 * ADVISED_RK4
+    good = summarize(*converged)
+    bad = summarize(spec, scene, wrong)
+    assert bad["max_roller_slip"] > 5 * good["max_roller_slip"], (bad["max_roller_slip"], good["max_roller_slip"])
+    assert bad["energy_balance_error"] > 1e-2 and good["energy_balance_error"] < 1e-8
+    assert len(wrong.metadata.get("warnings", [])) == 1 and "exceeds the advised" in wrong.metadata["warnings"][0]
+
+    check = check_spurious_slip(scene, spec.solver, END, result=wrong)
+    assert check.spurious and check.difference > 1e-3
+    assert "t = " in check.message and "pair 'roller" in check.message
+    assert "Likely fix: reduce the step" in check.message
+
+
+def test_rk4_below_the_advice_passes_the_slip_check(converged):
+    spec, scene, result = converged
+    assert "warnings" not in result.metadata
+    check = check_spurious_slip(scene, spec.solver, END, result=result)
+    assert not check.spurious and check.difference < 1e-5, check.message
+    assert check.message.startswith("slip converged")
