@@ -58,46 +58,62 @@ def body_trigonometry(q):
 
 
 @numba.njit(cache=True, inline="always")
-def pair_geometry(kind, a, b, anchor_x, anchor_y, direction_x, direction_y, ra, rb, q, v, cos_a, sin_a):
-    """Gap, gap rate, slip, normal, contact point, relative spin and rolling speed of one pair.
+def pair_position(kind, a, b, anchor_x, anchor_y, direction_x, direction_y, ra, rb, q, cos_a, sin_a):
+    """Gap, normal and a's feature point (px, py) of one pair, from positions only.
 
     Scalars in, scalars out, on purpose: passing the PairArrays tuple into any call (inlined or not) costs
     ~0.1–0.4 µs of reference counting per pair, more than the geometry. Callers loop over the pairs and pass
     the pair's columns and body a's cos θ, sin θ (1, 0 for the ground) from :func:`body_trigonometry`.
     """
+    ax = ay = 0.0
+    if a >= 0:
+        ax, ay = q[3 * a], q[3 * a + 1]
+    rx, ry = kinematics.rotate(cos_a, sin_a, anchor_x, anchor_y)
+    px, py = ax + rx, ay + ry
+    bx, by = q[3 * b], q[3 * b + 1]
+    if kind == _CIRCLE_LINE:
+        nlx, nly = kinematics.rotate(cos_a, sin_a, direction_x, direction_y)
+        gap, nx, ny = kinematics.circle_line(bx, by, rb, px, py, nlx, nly)
+    elif kind == _CIRCLE_IN_CIRCLE:
+        gap, nx, ny = kinematics.circle_in_circle(bx, by, rb, px, py, ra)
+    else:  # circle_circle, and circle_point with radius_a = 0
+        gap, nx, ny = kinematics.circle_circle(bx, by, rb, px, py, ra)
+    return gap, nx, ny, px, py
+
+
+@numba.njit(cache=True, inline="always")
+def pair_motion(kind, a, b, ra, rb, gap, nx, ny, px, py, q, v):
+    """Gap rate, slip, contact point, relative spin and rolling speed of one pair, after :func:`pair_position`."""
     bx, by = q[3 * b], q[3 * b + 1]
     bvx, bvy, bomega = v[3 * b], v[3 * b + 1], v[3 * b + 2]
     ax = ay = avx = avy = aomega = 0.0
     if a >= 0:
         ax, ay = q[3 * a], q[3 * a + 1]
         avx, avy, aomega = v[3 * a], v[3 * a + 1], v[3 * a + 2]
-    rx, ry = kinematics.rotate(cos_a, sin_a, anchor_x, anchor_y)
-    px, py = ax + rx, ay + ry
     pvx, pvy = kinematics.point_velocity(avx, avy, aomega, ax, ay, px, py)
     if kind == _CIRCLE_LINE:
-        nlx, nly = kinematics.rotate(cos_a, sin_a, direction_x, direction_y)
-        gap, nx, ny = kinematics.circle_line(bx, by, rb, px, py, nlx, nly)
         normal_rate = aomega
     elif kind == _CIRCLE_IN_CIRCLE:
-        gap, nx, ny = kinematics.circle_in_circle(bx, by, rb, px, py, ra)
         normal_rate = -kinematics.centre_line_rate(nx, ny, bvx - pvx, bvy - pvy, max(ra - rb - gap, 1e-300))
-    else:  # circle_circle, and circle_point with radius_a = 0
-        gap, nx, ny = kinematics.circle_circle(bx, by, rb, px, py, ra)
+    else:
         normal_rate = kinematics.centre_line_rate(nx, ny, bvx - pvx, bvy - pvy, max(gap + ra + rb, 1e-300))
     cx, cy = bx - rb * nx, by - rb * ny
     vbx, vby = kinematics.point_velocity(bvx, bvy, bomega, bx, by, cx, cy)
     vax, vay = kinematics.point_velocity(avx, avy, aomega, ax, ay, cx, cy)
     gap_rate, slip = kinematics.relative_motion(nx, ny, vbx, vby, vax, vay)
     rolling = kinematics.rolling_speed(nx, ny, vbx, vby, vax, vay, bvx, bvy, rb, normal_rate)
-    return gap, gap_rate, slip, nx, ny, cx, cy, bomega - aomega, rolling
+    return gap_rate, slip, cx, cy, bomega - aomega, rolling
 
 
 @numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
-def scene_forces(packed, t, q, v, latched, forces, pair_out):
+def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
     """Generalized forces [N, N, N m per body] of contacts, loads and drives, written into ``forces``.
 
     ``pair_out`` (pairs × :data:`PAIR_OUTPUTS`) receives each pair's gap, gap rate, slip, forces, the power it
     dissipates and its rolling speed. Returns (input power of loads and drives, dissipated power) [W].
+    ``complete=False`` (inside integration stages) skips the velocity-level outputs of pairs apart, which no
+    force needs (about a third of the evaluation for a bearing, where most pocket and upper raceway pairs are
+    apart): their gap rate, slip and rolling speed are left 0.
     Gravity and constraint forces are the engines' business.
     """
     forces[:] = 0.0
@@ -105,11 +121,14 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out):
     dissipated = 0.0
     cos_theta, sin_theta = body_trigonometry(q)
     for k in range(pairs.kind.size):
-        a, b = pairs.body_a[k], pairs.body_b[k]
-        gap, gap_rate, slip, nx, ny, cx, cy, spin, rolling = pair_geometry(
-            pairs.kind[k], a, b, pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0],
-            pairs.direction[k, 1], pairs.radius_a[k], pairs.radius_b[k], q, v,
-            cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
+        a, b, kind = pairs.body_a[k], pairs.body_b[k], pairs.kind[k]
+        ra, rb = pairs.radius_a[k], pairs.radius_b[k]
+        gap, nx, ny, px, py = pair_position(
+            kind, a, b, pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0], pairs.direction[k, 1],
+            ra, rb, q, cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
+        gap_rate = slip = spin = rolling = 0.0
+        if complete or gap < 0.0:
+            gap_rate, slip, cx, cy, spin, rolling = pair_motion(kind, a, b, ra, rb, gap, nx, ny, px, py, q, v)
         fn = ft = moment = loss = 0.0
         if gap < 0.0:
             approach = normal.reference_approach_speed(latched[k], gap_rate, pairs.approach_speed_floor[k])

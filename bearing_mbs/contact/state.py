@@ -17,7 +17,7 @@ import numba
 import numpy as np
 
 from . import normal
-from .kernel import body_trigonometry, pair_geometry
+from .kernel import body_trigonometry, pair_motion, pair_position
 
 EVENT_COLUMNS = ("impact_time", "impact_speed", "separation_time", "separation_speed")
 
@@ -44,12 +44,16 @@ def advance_pair_state(pairs, q, v, t, latched, events, penetration_bound):
     worst, worst_excess = -1, 1.0
     cos_theta, sin_theta = body_trigonometry(q)
     for k in range(pairs.kind.size):
-        a = pairs.body_a[k]
-        gap, gap_rate, _, _, _, _, _, _, _ = pair_geometry(
-            pairs.kind[k], a, pairs.body_b[k], pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0],
-            pairs.direction[k, 1], pairs.radius_a[k], pairs.radius_b[k], q, v,
-            cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
+        a, b, kind = pairs.body_a[k], pairs.body_b[k], pairs.kind[k]
+        ra, rb = pairs.radius_a[k], pairs.radius_b[k]
+        gap, nx, ny, px, py = pair_position(
+            kind, a, b, pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0], pairs.direction[k, 1],
+            ra, rb, q, cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
         was_in_contact = latched[k] > 0.0
+        if gap >= 0.0 and not was_in_contact:  # apart before and after: nothing to latch or record
+            latched[k] = 0.0
+            continue
+        gap_rate = pair_motion(kind, a, b, ra, rb, gap, nx, ny, px, py, q, v)[0]
         new = normal.latch_approach_speed(gap, gap_rate, latched[k], pairs.approach_speed_floor[k])
         if new != latched[k]:
             changed = True

@@ -65,8 +65,9 @@ def regularised_sign(law, speed, regularisation_speed):
     return sign
 
 
-def scene_forces(packed, t, q, v, latched, forces, pair_out):
-    """Same contract as :func:`bearing_mbs.contact.kernel.scene_forces`."""
+def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
+    """Same contract as :func:`bearing_mbs.contact.kernel.scene_forces`; always complete (``complete`` is
+    accepted for the same call signature)."""
     pairs = packed.pairs
     gap, gap_rate, slip, nx, ny, cx, cy, spin, rolling = pair_geometry(pairs, q, v)
     approach = normal.reference_approach_speed(latched, gap_rate, pairs.approach_speed_floor)

@@ -60,7 +60,7 @@ class ForceConnector:
     def __call__(self, mbs, t, item_number, q, q_t):
         self.evaluations += 1
         np.add(self.reference, q, out=self._q)  # Exudyn passes displacements from the reference
-        self.evaluate(self.packed, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs)
+        self.evaluate(self.packed, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs, False)
         return self._forces
 
 

@@ -221,11 +221,11 @@ class _StepMonitor:
         self._progress_every, self._calls = max(1, int(end_time / solver.exudyn.step / 200)), 0
         self._record(0.0, [0.0] * len(scene.constraints))
 
-    def _evaluate(self, t):
-        return scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, self._pairs)
+    def _evaluate(self, t, complete=False):
+        return scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, self._pairs, complete)
 
     def _record(self, t, constraint_forces=None):
-        self._evaluate(t)
+        self._evaluate(t, complete=True)
         forces = self.constraint_forces() if constraint_forces is None else constraint_forces
         self.rows.append((t, self.q.copy(), self.v.copy(), self._pairs.copy(), self.work.copy(), np.array(forces)))
 

@@ -67,7 +67,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
         """The state at t as output row ``index`` (initial state, or the state where a run stopped)."""
         acc, forces = np.empty(n), np.empty(n)
         pair_out, constraint_forces = np.empty((pair_count, N_PAIR_OUTPUTS)), np.empty(constraint_count)
-        ig.accelerations(packed, t, q, v, latched, acc, forces, pair_out, constraint_forces)
+        ig.accelerations(packed, t, q, v, latched, acc, forces, pair_out, constraint_forces, True)
         return t, q.copy(), v.copy(), pair_out, work.copy(), constraint_forces, acc
 
     out_t[0], out_q[0], out_v[0], out_pairs[0], out_work[0], out_constraints[0], initial_acceleration = record(0, 0.0)

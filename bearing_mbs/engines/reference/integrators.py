@@ -48,10 +48,11 @@ STEPS, REJECTED, EVALUATIONS = 0, 1, 2
 
 
 @numba.njit(cache=True, inline="always")
-def accelerations(packed, t, q, v, latched, a, forces, pair_out, constraint_forces):
+def accelerations(packed, t, q, v, latched, a, forces, pair_out, constraint_forces, complete=False):
     """a = M⁻¹ f(t, q, v) + gravity, made consistent with the constraints (their forces [N] into
-    ``constraint_forces``). Returns (supplied, dissipated) power [W]."""
-    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, pair_out)
+    ``constraint_forces``). Returns (supplied, dissipated) power [W]. ``complete``: also the velocity-level
+    outputs of pairs apart (output instants only; see :func:`bearing_mbs.contact.kernel.scene_forces`)."""
+    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, pair_out, complete)
     for i in range(q.size):
         a[i] = packed.inverse_mass[i] * forces[i] + packed.gravity[i]
     if packed.constraints.kind.size > 0:
@@ -245,7 +246,7 @@ def integrate(method, packed, tab_a, tab_b, tab_c, tab_e, error_order, fsal,
         out_t[output_index] = t
         out_q[output_index] = q
         out_v[output_index] = v
-        accelerations(packed, t, q, v, latched, output_acc, forces, pair_out, constraint_forces)
+        accelerations(packed, t, q, v, latched, output_acc, forces, pair_out, constraint_forces, True)
         out_pairs[output_index] = pair_out
         out_work[output_index] = work
         out_constraints[output_index] = constraint_forces
