@@ -186,7 +186,7 @@ def amplification_matrix(method: str, h, alpha: float, beta: float) -> np.ndarra
     r"""One step of a reference second-order scheme on :math:`\ddot q = \alpha q + \beta\dot q`, as a matrix
     (a stack of matrices for an array of steps ``h``)."""
     h = np.asarray(h, dtype=float)
-    one, zero = np.ones_like(h), np.zeros_like(h)
+    one = np.ones_like(h)
     if method == "reference/central_difference":  # state (q, v)
         rows = [[1 + h * h * alpha, h + h * h * beta], [h * alpha, 1 + h * beta]]
     elif method == "reference/velocity_verlet":  # state (q, v, a): a is the stored acceleration

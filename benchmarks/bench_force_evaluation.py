@@ -40,7 +40,7 @@ def main() -> dict:
         "kernel": per_call(lambda: kernel.scene_forces(packed, 0.0, q, v, latched, forces, pair_out), 20000),
         "numpy_twin": per_call(lambda: twin.scene_forces(packed, 0.0, q, v, latched, forces, pair_out), 2000),
     }
-    runs = {f"exudyn_{c}": [f"solver.engine=exudyn", "solver.exudyn.method=rk44", f"solver.exudyn.step={STEP}",
+    runs = {f"exudyn_{c}": ["solver.engine=exudyn", "solver.exudyn.method=rk44", f"solver.exudyn.step={STEP}",
                             f"solver.exudyn.connector={c}"] for c in ("compiled", "python")}
     runs["reference_rk4"] = ["solver.reference.method=rk4", f"solver.reference.step={STEP}"]
     for name, overrides in runs.items():

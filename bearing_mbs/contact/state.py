@@ -26,6 +26,12 @@ def new_events(pair_count: int) -> np.ndarray:
     return np.full((pair_count, len(EVENT_COLUMNS)), np.nan)
 
 
+def initial_pair_state(pairs, penetration_limit: float):
+    """(latched approach speeds, event log, penetration bounds) of a run's start, for both engines."""
+    count = pairs.kind.size
+    return np.zeros(count), new_events(count), penetration_bounds(pairs, penetration_limit)
+
+
 def penetration_bounds(pairs, fraction: float) -> np.ndarray:
     """Largest admissible penetration per pair [m]: ``fraction`` of the smaller non-zero radius."""
     radius = np.where(pairs.radius_a > 0, np.minimum(pairs.radius_a, pairs.radius_b), pairs.radius_b)

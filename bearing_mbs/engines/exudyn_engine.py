@@ -24,7 +24,7 @@ import time
 import numpy as np
 
 from ..contact.kernel import N_PAIR_OUTPUTS, scene_forces
-from ..contact.state import advance_pair_state, new_events, penetration_bounds
+from ..contact.state import advance_pair_state, initial_pair_state
 from ..progress import ProgressMeter
 from ..result import FAILED, SUCCESS, Result, Stats
 from ..scene import DistanceConstraint, Scene
@@ -58,11 +58,9 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     settings = solver.exudyn
     progress = progress or ProgressMeter()
     packed = scene.pack()
-    n, pair_count = scene.coordinate_count, len(scene.pairs)
+    n = scene.coordinate_count
     reference, _ = scene.initial_state()
-    latched = np.zeros(pair_count)
-    events = new_events(pair_count)
-    bounds = penetration_bounds(packed.pairs, solver.penetration_limit)
+    latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
 
     container = exu.SystemContainer()
     mbs = container.AddSystem()

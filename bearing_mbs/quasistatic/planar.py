@@ -40,7 +40,7 @@ from ..contact.line_contact import (
 )
 from ..spec.fields import SpecError
 from .ring import solve_ring
-from .rollers import NewtonSettings, RollerSet, check_speed, check_vector
+from .rollers import NewtonSettings, RollerLoads, RollerSet, check_speed, check_vector
 from .roots import decreasing_root
 
 #: Load-distribution integral J_r(0.5) of a zero-clearance line-contact bearing (n = 10/9), used only for
@@ -117,7 +117,7 @@ def radial_roller_equilibrium(
 
 
 @dataclass(frozen=True)
-class RadialSolution:
+class RadialSolution(RollerLoads):
     r"""Load distribution of the planar model.
 
     rollers: the :class:`RollerSet`; shaft_speed: inner-ring speed [rad/s]; load: :math:`(F_x, F_y)` [N]
@@ -145,33 +145,9 @@ class RadialSolution:
     residual: float = 0.0
 
     @property
-    def force(self) -> np.ndarray:
-        """Alias of ``load``, the ring's generalised force P [N] (used by the ring solver)."""
-        return self.load
-
-    @property
-    def load_scale(self) -> float:
-        return float(self.inner_loads.sum())
-
-    @property
     def cage_speed(self) -> float:
         """Epicyclic cage speed [rad/s]."""
         return self.rollers.cage_speed(self.shaft_speed)
-
-    @property
-    def centrifugal_force(self) -> float:
-        """Roller centrifugal force F_c [N]."""
-        return self.rollers.centrifugal_force(self.shaft_speed)
-
-    @property
-    def max_roller_load(self) -> float:
-        """Largest inner-contact load [N] (the load a roller carries from the ring; outer = inner + F_c)."""
-        return float(self.inner_loads.max())
-
-    @property
-    def loaded(self) -> np.ndarray:
-        """Rollers whose inner contact carries load, boolean (Z,)."""
-        return self.inner_loads > 0.0
 
     @property
     def loaded_zone_half_angle(self) -> float:

@@ -209,3 +209,32 @@ def check_speed(shaft_speed) -> float:
     """The inner-ring speed [rad/s] as a finite float."""
     finite("shaft_speed", shaft_speed)
     return float(shaft_speed)
+
+
+class RollerLoads:
+    """Properties shared by the planar and sliced solutions, which both hold the ring's generalised force
+    ``load``, the inner-contact roller loads ``inner_loads`` [N], the ``rollers`` and the ``shaft_speed``."""
+
+    @property
+    def force(self) -> np.ndarray:
+        """Alias of ``load``, the ring's generalised force [N] (used by the ring solver)."""
+        return self.load
+
+    @property
+    def load_scale(self) -> float:
+        return float(self.inner_loads.sum())
+
+    @property
+    def centrifugal_force(self) -> float:
+        """Roller centrifugal force F_c [N]."""
+        return self.rollers.centrifugal_force(self.shaft_speed)
+
+    @property
+    def max_roller_load(self) -> float:
+        """Largest inner-contact load [N] (the load a roller carries from the ring; outer = inner + F_c)."""
+        return float(self.inner_loads.max())
+
+    @property
+    def loaded(self) -> np.ndarray:
+        """Rollers whose inner contact carries load, boolean (Z,)."""
+        return self.inner_loads > 0.0

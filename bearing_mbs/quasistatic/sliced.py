@@ -61,7 +61,7 @@ from ..spec.fields import SpecError, require
 from .planar import _FIRST_GUESS_INTEGRAL
 from .profiles import CircularCrown, Flat, LogarithmicCrown
 from .ring import ARMIJO, MAX_DOUBLINGS, regularised_solve, solve_ring
-from .rollers import NewtonSettings, RollerSet, check_speed, check_vector
+from .rollers import NewtonSettings, RollerLoads, RollerSet, check_speed, check_vector
 from .roots import decreasing_root
 
 PROFILES = (Flat, CircularCrown, LogarithmicCrown)
@@ -331,7 +331,7 @@ def _condense(inner: np.ndarray, outer: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class SlicedSolution:
+class SlicedSolution(RollerLoads):
     r"""Load distribution and 4×4 stiffness of the sliced model.
 
     model: the :class:`SlicedRollerSet`; shaft_speed [rad/s]; load :math:`(F_x, F_y, M_x, M_y)` [N, N, N m,
@@ -367,30 +367,8 @@ class SlicedSolution:
         return self.model.rollers
 
     @property
-    def force(self) -> np.ndarray:
-        """Alias of ``load`` (used by the ring solver)."""
-        return self.load
-
-    @property
-    def load_scale(self) -> float:
-        return float(self.inner_loads.sum())
-
-    @property
     def slice_positions(self) -> np.ndarray:
         return self.model.slice_positions
-
-    @property
-    def centrifugal_force(self) -> float:
-        return self.rollers.centrifugal_force(self.shaft_speed)
-
-    @property
-    def max_roller_load(self) -> float:
-        """Largest inner-contact roller load [N]."""
-        return float(self.inner_loads.max())
-
-    @property
-    def loaded(self) -> np.ndarray:
-        return self.inner_loads > 0.0
 
 
 def sliced_state(

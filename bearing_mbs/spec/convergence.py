@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .fields import SpecError, in_range, one_of, positive, require
 from .solver import CONNECTORS, ENGINES, EXUDYN_METHODS, REFERENCE_METHODS

@@ -8,7 +8,7 @@ import time
 import numpy as np
 
 from ...contact.kernel import N_PAIR_OUTPUTS, scene_forces
-from ...contact.state import new_events, penetration_bounds
+from ...contact.state import initial_pair_state, penetration_bounds
 from ...progress import ProgressMeter
 from ...result import FAILED, SUCCESS, Result, Stats
 from ...scene import Scene
@@ -35,9 +35,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     packed = scene.pack()
     n, pair_count = scene.coordinate_count, len(scene.pairs)
     q, v = scene.initial_state()
-    latched = np.zeros(pair_count)
-    events = new_events(pair_count)
-    bounds = penetration_bounds(packed.pairs, solver.penetration_limit)
+    latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
 
     times = output_grid(end_time, solver.output_interval)
     constraint_count = len(scene.constraints)

@@ -40,7 +40,7 @@ _TEMPORARY = ".part-"
 
 COLUMNS = ("key", "status", "model", "attempts", "wall_time_s", "worker", "finished_at", "error",
            "summary", "inputs", "version")
-_SCHEMA = f"""
+_SCHEMA = """
 CREATE TABLE IF NOT EXISTS runs (
     key TEXT PRIMARY KEY,
     status TEXT NOT NULL,
