@@ -148,7 +148,7 @@ def stability_polynomial(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.array(coefficients)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _polynomial(method: str) -> np.ndarray:
     return stability_polynomial(*RK_TABLEAUS[method])
 
@@ -425,7 +425,7 @@ class BearingLayout:
     roller_drag: tuple[float, float] = (0.0, 0.0)  # viscous drag on a roller: linear [N s/m], angular [N m s]
 
     @classmethod
-    def of(cls, scene: Scene) -> "BearingLayout | None":
+    def of(cls, scene: Scene) -> BearingLayout | None:
         inner = [p for p in scene.pairs if p.name.endswith("-inner_race")]
         outer = [p for p in scene.pairs if p.name.endswith("-outer_race")]
         if not inner or len(inner) != len(outer) or inner[0].kind != "circle_circle":

@@ -7,12 +7,12 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from .analysis import energy  # noqa: E402
-from .figures_bearing import bearing_figures  # noqa: E402
-from .result import Result  # noqa: E402
-from .scene import Scene  # noqa: E402
+from .analysis import energy
+from .figures_bearing import bearing_figures
+from .result import Result
+from .scene import Scene
 
 
 def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[Path]:

@@ -22,8 +22,15 @@ from pathlib import Path
 
 import numpy as np
 
-from .analysis.bearing import (cage_speed, load_distribution, pair_columns, roller_indices, roller_orbit_angles,
-                               slip_ratios, window)
+from .analysis.bearing import (
+    cage_speed,
+    load_distribution,
+    pair_columns,
+    roller_indices,
+    roller_orbit_angles,
+    slip_ratios,
+    window,
+)
 from .geometry import BearingGeometry
 
 log = logging.getLogger(__name__)

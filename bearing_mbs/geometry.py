@@ -55,7 +55,7 @@ class BearingGeometry:
     outer_land_radius: float  # on the outer ring, for an outer-land-guided cage [m]
 
     @classmethod
-    def from_spec(cls, spec: BearingSpec) -> "BearingGeometry":
+    def from_spec(cls, spec: BearingSpec) -> BearingGeometry:
         z, d_w, length = spec.rollers, spec.roller_diameter, spec.roller_length
         pitch, clearance = spec.pitch, spec.clearance
         d_c, h, t = spec.cage_diameter, spec.pocket_clearance, spec.cage_thickness

@@ -137,7 +137,7 @@ class Profile:
             raise ValueError("profile: times must not decrease")
 
     @classmethod
-    def constant(cls, value: float) -> "Profile":
+    def constant(cls, value: float) -> Profile:
         return cls((0.0,), (float(value),))
 
     def __call__(self, t):
@@ -232,7 +232,7 @@ class Scene:
         v = np.array([b.velocity for b in self.bodies], dtype=float).ravel()
         return q, v
 
-    def pack(self) -> "PackedScene":
+    def pack(self) -> PackedScene:
         return pack_scene(self)
 
 

@@ -11,14 +11,13 @@ Ratios are to the compiled kernel in the same run; compare ratios, not seconds, 
 from __future__ import annotations
 
 import numpy as np
+from common import best_of, write
 
 from bearing_mbs.builders import build_scene
 from bearing_mbs.cases import seed_spec
 from bearing_mbs.contact import kernel, twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate
-
-from common import best_of, write
 
 END_TIME, STEP = 0.02, 1e-6  # the first ball–floor contacts fall inside the window
 

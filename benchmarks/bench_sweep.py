@@ -24,14 +24,19 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import machine  # noqa: E402
+from common import machine
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "out" / "sweep_throughput.json"
 
 
 def study(runs: int, step: float):
-    from bearing_mbs.studies.sensitivity import Method, Parameter, SimulationModel, Study
+    from bearing_mbs.studies.sensitivity import (
+        Method,
+        Parameter,
+        SimulationModel,
+        Study,
+    )
 
     model = SimulationModel(str(ROOT / "scenarios" / "seed_case2.toml"),
                             ("solver.reference.method=velocity_verlet", f"solver.reference.step={step!r}"))
@@ -50,7 +55,12 @@ def warm_up(model, inputs) -> float:
 
 
 def measure(the_study, workers: int) -> dict:
-    from bearing_mbs.studies.sensitivity import EvaluationStats, connect, evaluate, sample
+    from bearing_mbs.studies.sensitivity import (
+        EvaluationStats,
+        connect,
+        evaluate,
+        sample,
+    )
 
     X = sample(the_study)
     base = the_study.model.canonical(the_study.model.base())
@@ -104,7 +114,7 @@ def main(argv: list[str] = ()) -> dict:
         # other processes on the machine compete with the workers: a 1-minute load near or above the CPU
         # count before the run makes the 2-worker figure meaningless
         "load_average_1_5_15min": {"before": load_before, "after": load_after},
-        "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
     }
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(report, indent=2) + "\n")

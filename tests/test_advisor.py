@@ -27,8 +27,8 @@ import numpy as np
 import pytest
 
 from bearing_mbs.advisor import (
-    BearingLayout,
     Advice,
+    BearingLayout,
     advise,
     axis_limits,
     mode_limit,
@@ -164,7 +164,7 @@ def test_seed_bearing_advice_is_friction_limited():
 
 def test_step_warning_only_above_the_limit_and_only_for_fixed_explicit_steps():
     _, scene = nominal()
-    rk4 = lambda step: SolverSpec(engine="reference", reference=ReferenceSolver(method="rk4", step=step))  # noqa: E731
+    rk4 = lambda step: SolverSpec(engine="reference", reference=ReferenceSolver(method="rk4", step=step))
     message = step_warning(scene, rk4(5e-7))
     assert message is not None and "5e-07 s exceeds" in message and "friction" in message and "advise" in message
     assert step_warning(scene, rk4(1e-7)) is None

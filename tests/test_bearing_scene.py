@@ -16,12 +16,12 @@ import numpy as np
 import pytest
 
 from bearing_mbs.builders import build_scene
+from bearing_mbs.cases import SCENARIOS
 from bearing_mbs.contact import twin
 from bearing_mbs.drivetrain import GearTrain
 from bearing_mbs.engines.reference.constraints import constraint_rows
 from bearing_mbs.geometry import BearingGeometry
 from bearing_mbs.spec import GearTrainSpec, SpecError, load_spec, spec_from_mapping
-from bearing_mbs.cases import SCENARIOS
 
 STEADY = SCENARIOS / "seed_hss_steady.toml"
 Z = 15

@@ -12,14 +12,13 @@ References and tolerances:
 
 import numpy as np
 import pytest
+from test_laws import expected_restitution
 
 from bearing_mbs.analysis import energy, restitution_effective
 from bearing_mbs.builders import build_scene
 from bearing_mbs.cases import seed_spec, single_impact_spec
 from bearing_mbs.contact.normal import DAMPING_FACTOR
 from bearing_mbs.engines import simulate
-
-from test_laws import expected_restitution
 
 SOLVERS = {
     "reference rk4": {"engine": "reference", "reference": {"method": "rk4", "step": 1e-6}},

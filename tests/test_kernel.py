@@ -9,7 +9,17 @@ import numpy as np
 import pytest
 
 from bearing_mbs.contact import FRICTION_LAWS, PAIR_KINDS, kernel, twin
-from bearing_mbs.scene import GROUND, Body, ContactPair, Drag, Load, PairLaw, Profile, Scene, VelocityServo
+from bearing_mbs.scene import (
+    GROUND,
+    Body,
+    ContactPair,
+    Drag,
+    Load,
+    PairLaw,
+    Profile,
+    Scene,
+    VelocityServo,
+)
 
 
 def random_scene(rng, n_bodies=4, n_pairs=40):

@@ -44,7 +44,7 @@ def integrate_impact(law, restitution, exponent, v0=1.0, mass=0.1, stiffness=6e6
         force = normal.hysteresis_force(gap, gap_rate, stiffness, exponent, d, v0)
         return [gap_rate, force / mass]
 
-    separated = lambda t, y: y[0]  # noqa: E731
+    separated = lambda t, y: y[0]
     separated.terminal, separated.direction = True, 1
     solution = solve_ivp(rhs, (0, 1.0), [0.0, -v0], method="DOP853", rtol=1e-11, atol=1e-14, events=separated,
                          first_step=1e-9)

@@ -44,7 +44,7 @@ def bearing(rollers=15, **changes):
 def harris_integral(eps, n=N_EXP):
     """J_r(ε) by adaptive quadrature over the loaded zone |ψ| < ψ_l, cos ψ_l = 1 − 2ε."""
     limit = math.acos(1 - 2 * eps) if eps < 1 else math.pi
-    integrand = lambda psi: (1 - (1 - math.cos(psi)) / (2 * eps)) ** n * math.cos(psi)  # noqa: E731
+    integrand = lambda psi: (1 - (1 - math.cos(psi)) / (2 * eps)) ** n * math.cos(psi)
     return quad(integrand, -limit, limit, epsabs=0, epsrel=1e-12, limit=200)[0] / (2 * math.pi)
 
 

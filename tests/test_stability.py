@@ -18,7 +18,14 @@ import pytest
 from bearing_mbs.cases import SCENARIOS
 from bearing_mbs.spec import load_spec
 from bearing_mbs.studies import stability
-from bearing_mbs.studies.stability import CASE_NAMES, REDUCED_CASES, REDUCED_SOLVERS, SOLVERS, failure_reason, walk
+from bearing_mbs.studies.stability import (
+    CASE_NAMES,
+    REDUCED_CASES,
+    REDUCED_SOLVERS,
+    SOLVERS,
+    failure_reason,
+    walk,
+)
 from bearing_mbs.studies.table import read_rows
 
 BASE = SCENARIOS / "seed_hss_steady.toml"

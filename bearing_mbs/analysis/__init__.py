@@ -89,6 +89,6 @@ def balls_metrics(spec, scene: Scene, result: Result) -> dict:
     return metrics
 
 
-from .bearing import bearing_metrics  # noqa: E402  (it uses energy_balance_error above)
+from .bearing import bearing_metrics  # after energy_balance_error, which it imports
 
 METRICS = {"balls": balls_metrics, "bearing": bearing_metrics}

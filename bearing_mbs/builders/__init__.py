@@ -1,7 +1,7 @@
 """Spec → scene builders. Each includes only what its case needs."""
 
-from ..spec import Spec
 from ..scene import Scene
+from ..spec import Spec
 from .balls import build_balls_scene
 from .bearing import build_bearing_scene
 

@@ -20,11 +20,26 @@ import math
 
 import numpy as np
 
-from ..contact.line_contact import PALMGREN_EXPONENT, STEEL_EFFECTIVE_MODULUS, effective_modulus, palmgren_stiffness
+from ..contact.line_contact import (
+    PALMGREN_EXPONENT,
+    STEEL_EFFECTIVE_MODULUS,
+    effective_modulus,
+    palmgren_stiffness,
+)
 from ..drivetrain import GearTrain
 from ..geometry import BearingGeometry
 from ..lubrication import palmgren_drag_moment, roller_drag_coefficient
-from ..scene import GROUND, Body, ContactPair, Drag, Load, PointOnLineConstraint, Profile, Scene, VelocityServo
+from ..scene import (
+    GROUND,
+    Body,
+    ContactPair,
+    Drag,
+    Load,
+    PointOnLineConstraint,
+    Profile,
+    Scene,
+    VelocityServo,
+)
 from ..spec import Spec, SpecError
 from .common import initial_gaps, pair_law
 

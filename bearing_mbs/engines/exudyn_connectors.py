@@ -73,7 +73,11 @@ def without_pairs(packed) -> tuple:
 
 def add_native_contacts(mbs, scene: Scene, body_objects: list[int], ground_object: int) -> None:
     """One ObjectContactSphereSphere per pair (normal force only)."""
-    from exudyn.itemInterface import MarkerBodyRigid, NodeGenericData, ObjectContactSphereSphere
+    from exudyn.itemInterface import (
+        MarkerBodyRigid,
+        NodeGenericData,
+        ObjectContactSphereSphere,
+    )
 
     q0, _ = scene.initial_state()
     for pair in scene.pairs:

@@ -30,7 +30,12 @@ from ..result import FAILED, SUCCESS, Result, Stats
 from ..scene import DistanceConstraint, Scene
 from ..spec.fields import SpecError
 from ..spec.solver import EXUDYN_METHODS, SolverSpec
-from .exudyn_connectors import ForceConnector, add_native_contacts, check_native, without_pairs
+from .exudyn_connectors import (
+    ForceConnector,
+    add_native_contacts,
+    check_native,
+    without_pairs,
+)
 from .reference.engine import diverged_message, output_grid, penetration_message
 
 
@@ -49,9 +54,19 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
                     spec: dict | None = None) -> Result:
     import exudyn as exu
     from exudyn.itemInterface import (
-        LoadMassProportional, MarkerBodyMass, MarkerBodyPosition, MarkerBodyRigid, MarkerNodeCoordinate,
-        NodePointGround, NodeRigidBody2D, ObjectConnectorCoordinate, ObjectConnectorDistance, ObjectGenericODE2,
-        ObjectGround, ObjectJointPrismatic2D, ObjectRigidBody2D,
+        LoadMassProportional,
+        MarkerBodyMass,
+        MarkerBodyPosition,
+        MarkerBodyRigid,
+        MarkerNodeCoordinate,
+        NodePointGround,
+        NodeRigidBody2D,
+        ObjectConnectorCoordinate,
+        ObjectConnectorDistance,
+        ObjectGenericODE2,
+        ObjectGround,
+        ObjectJointPrismatic2D,
+        ObjectRigidBody2D,
     )
 
     check_supported(scene, solver)

@@ -16,7 +16,13 @@ See ``docs/quasistatic.md``.
 """
 
 from .figures import plot_load_distribution
-from .planar import RadialRollerEquilibrium, RadialSolution, radial_roller_equilibrium, radial_state, solve_radial
+from .planar import (
+    RadialRollerEquilibrium,
+    RadialSolution,
+    radial_roller_equilibrium,
+    radial_state,
+    solve_radial,
+)
 from .profiles import CircularCrown, Flat, LogarithmicCrown
 from .rollers import ConvergenceError, NewtonSettings, RollerSet
 from .sliced import (

@@ -107,7 +107,7 @@ class LogarithmicCrown:
     @classmethod
     def lundberg(
         cls, design_load: float, length: float, contact_modulus: float, end_drop: float | None = None
-    ) -> "LogarithmicCrown":
+    ) -> LogarithmicCrown:
         r"""Lundberg's scale :math:`A = 2Q_d/(\pi L E^*)` for design load :math:`Q_d` [N] > 0, length
         :math:`L` [m] and contact modulus :math:`E^*` [Pa] > 0 (:math:`1.15\cdot10^{11}` for steel on steel)."""
         positive("design_load", design_load)

@@ -56,7 +56,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..contact.line_contact import SlicedContact, series_stiffness, sliced_contact, slice_coefficient
+from ..contact.line_contact import (
+    SlicedContact,
+    series_stiffness,
+    slice_coefficient,
+    sliced_contact,
+)
 from ..spec.fields import SpecError, require
 from .planar import _FIRST_GUESS_INTEGRAL
 from .profiles import CircularCrown, Flat, LogarithmicCrown

@@ -12,7 +12,15 @@ from pathlib import Path
 
 from .balls import BallSpec, BoxSpec, ConstraintSpec
 from .bearing import (
-    PRESETS, AnalysisSpec, BearingSpec, CageSpec, DriveSpec, GearTrainSpec, LoadSpec, LubricantSpec, MaterialSpec,
+    PRESETS,
+    AnalysisSpec,
+    BearingSpec,
+    CageSpec,
+    DriveSpec,
+    GearTrainSpec,
+    LoadSpec,
+    LubricantSpec,
+    MaterialSpec,
 )
 from .contact import ContactSpec
 from .convergence import ConvergenceSpec, RunSettings
@@ -175,18 +183,18 @@ __all__ = [
     "AnalysisSpec",
     "BallSpec",
     "BearingSpec",
-    "CageSpec",
-    "DriveSpec",
-    "GearTrainSpec",
-    "LoadSpec",
-    "LubricantSpec",
-    "MaterialSpec",
     "BoxSpec",
+    "CageSpec",
     "ConstraintSpec",
     "ContactGroups",
     "ContactSpec",
     "ConvergenceSpec",
+    "DriveSpec",
     "ExudynSolver",
+    "GearTrainSpec",
+    "LoadSpec",
+    "LubricantSpec",
+    "MaterialSpec",
     "ReferenceSolver",
     "RunSettings",
     "Scenario",
@@ -195,6 +203,6 @@ __all__ = [
     "SpecError",
     "load_spec",
     "spec_from_mapping",
-    "with_model_defaults",
     "to_mapping",
+    "with_model_defaults",
 ]

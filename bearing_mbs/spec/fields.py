@@ -12,7 +12,7 @@ class SpecError(ValueError):
         self.field, self.value, self.allowed = field, value, allowed
         super().__init__(f"{field} = {value!r}: {allowed}")
 
-    def within(self, prefix: str) -> "SpecError":
+    def within(self, prefix: str) -> SpecError:
         """The same error with the section path prefixed."""
         if not prefix:
             return self

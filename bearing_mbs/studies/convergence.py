@@ -34,9 +34,9 @@ from ..engines import simulate
 from ..progress import ProgressMeter
 from ..result import Result
 from ..runner import write_json
-from .table import append_row, number, read_rows, text
 from ..spec import Spec, SpecError
 from ..spec.convergence import RunSettings
+from .table import append_row, number, read_rows, text
 
 log = logging.getLogger(__name__)
 

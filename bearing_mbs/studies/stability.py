@@ -41,9 +41,9 @@ import json
 import logging
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
@@ -53,13 +53,21 @@ from ..builders import build_scene
 from ..engines import simulate
 from ..progress import ProgressMeter
 from ..runner import write_json
-from .table import append_row, read_rows, text
 from ..spec import Spec, SpecError, spec_from_mapping, to_mapping
 from .spurious_slip import compare_slips
 from .stability_cases import (  # noqa: F401  (re-exported: the suite's cases and solvers)
-    ADAPTIVE, CASE_NAMES, CASES, IMPLICIT, ORDERS, REDUCED_CASES, REDUCED_SOLVERS, SOLVERS, Case,
+    ADAPTIVE,
+    CASE_NAMES,
+    CASES,
+    IMPLICIT,
+    ORDERS,
+    REDUCED_CASES,
+    REDUCED_SOLVERS,
+    SOLVERS,
+    Case,
 )
 from .stability_report import advised_figure, heat_map, markdown, summarize
+from .table import append_row, read_rows, text
 
 log = logging.getLogger(__name__)
 

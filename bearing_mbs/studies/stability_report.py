@@ -10,6 +10,7 @@ import numpy as np
 
 from .table import number
 
+
 def summarize(rows: list[dict]) -> dict:
     """Counts, and the fraction of explicit cells whose measured limit is within a factor of 2 of the advice."""
     measured = [r for r in rows if r["kind"] == "explicit" and number(r["ratio"]) > 0]

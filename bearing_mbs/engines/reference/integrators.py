@@ -35,7 +35,12 @@ import numpy as np
 
 from ...contact.kernel import scene_forces
 from ...contact.state import advance_pair_state
-from .constraints import add_constraint_accelerations, length_scale, project_positions, project_velocities
+from .constraints import (
+    add_constraint_accelerations,
+    length_scale,
+    project_positions,
+    project_velocities,
+)
 
 CENTRAL_DIFFERENCE, VELOCITY_VERLET, RUNGE_KUTTA = 0, 1, 2
 METHOD_CODES = {"central_difference": CENTRAL_DIFFERENCE, "velocity_verlet": VELOCITY_VERLET,

@@ -19,12 +19,27 @@ See ``docs/sensitivity.md``.
 
 from .analysis import Indices, analyze
 from .execution import EvaluationStats, TqdmRunProgress, connect, evaluate, run_table
-from .models import BUILTIN_MODELS, IshigamiModel, RunModel, SimulationModel, ishigami_indices
+from .models import (
+    BUILTIN_MODELS,
+    IshigamiModel,
+    RunModel,
+    SimulationModel,
+    ishigami_indices,
+)
 from .pipeline import StudyResult, run_study, write_report
 from .runs import Run, plan, run_key
 from .sampling import sample
 from .store import RunStore
-from .study import ANALYZERS, DISTRIBUTIONS, SAMPLERS, Execution, Method, Parameter, Study, load_study
+from .study import (
+    ANALYZERS,
+    DISTRIBUTIONS,
+    SAMPLERS,
+    Execution,
+    Method,
+    Parameter,
+    Study,
+    load_study,
+)
 
 __all__ = [
     "ANALYZERS",

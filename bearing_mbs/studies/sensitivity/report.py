@@ -12,12 +12,12 @@ import matplotlib
 import matplotlib.ticker
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
 
-from .analysis import Indices  # noqa: E402
-from .study import Study  # noqa: E402
+from .analysis import Indices
+from .study import Study
 
 REPORT_FILE = "report.md"
 RUNS_FILE = "runs.csv"

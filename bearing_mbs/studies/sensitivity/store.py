@@ -101,7 +101,7 @@ class RunStore:
             "attempts": outcome["attempt"],
             "wall_time_s": outcome.get("wall_time_s"),
             "worker": outcome.get("worker"),
-            "finished_at": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="milliseconds"),
+            "finished_at": datetime.datetime.now(datetime.UTC).isoformat(timespec="milliseconds"),
             "error": outcome.get("error"),
             "summary": _json_safe(outcome.get("summary")),
             "inputs": run.inputs,
