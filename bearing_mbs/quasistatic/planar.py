@@ -187,22 +187,31 @@ def solve_radial(
     """
     load = check_vector("load", load, 2)
     shaft_speed = check_speed(shaft_speed)
-    _require_load_or_preload(rollers, load)
-    fc = rollers.centrifugal_force(shaft_speed)
-    equivalent = series_stiffness(rollers.inner_stiffness, rollers.outer_stiffness, rollers.outer_exponent)
-    first_guess = (
-        max(rollers.diametral_clearance / 2.0, 0.0)
-        + (fc / rollers.outer_stiffness) ** (1.0 / rollers.outer_exponent)
-        + (np.linalg.norm(load) / (_FIRST_GUESS_INTEGRAL * rollers.rollers * equivalent))
-        ** (1.0 / rollers.outer_exponent)
-    )
+    require_load_or_preload(rollers, load)
     u, state, iterations, residual = solve_ring(
-        lambda u: _evaluate(rollers, u, shaft_speed, settings), load, np.ones(2), first_guess, settings
+        lambda u: _evaluate(rollers, u, shaft_speed, settings),
+        load,
+        np.ones(2),
+        first_guess(rollers, float(np.linalg.norm(load)), shaft_speed),
+        settings,
     )
     return replace(state, iterations=iterations, residual=residual)
 
 
-def _require_load_or_preload(rollers: RollerSet, load: np.ndarray) -> None:
+def first_guess(rollers: RollerSet, load_magnitude: float, shaft_speed: float) -> float:
+    """Starting ring displacement [m] for the Newton loop: half the clearance, the outer approach under the
+    centrifugal force, and the approach of a zero-clearance bearing under ``load_magnitude`` [N]."""
+    fc = rollers.centrifugal_force(shaft_speed)
+    equivalent = series_stiffness(rollers.inner_stiffness, rollers.outer_stiffness, rollers.outer_exponent)
+    return (
+        max(rollers.diametral_clearance / 2.0, 0.0)
+        + (fc / rollers.outer_stiffness) ** (1.0 / rollers.outer_exponent)
+        + (load_magnitude / (_FIRST_GUESS_INTEGRAL * rollers.rollers * equivalent)) ** (1.0 / rollers.outer_exponent)
+    )
+
+
+def require_load_or_preload(rollers: RollerSet, load: np.ndarray) -> None:
+    """:class:`SpecError` for an all-zero ``load`` on a bearing without preload (undetermined position)."""
     if np.all(load == 0.0) and rollers.diametral_clearance >= 0.0:
         raise SpecError(
             "load",

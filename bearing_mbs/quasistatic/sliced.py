@@ -58,12 +58,11 @@ import numpy as np
 
 from ..contact.line_contact import (
     SlicedContact,
-    series_stiffness,
     slice_coefficient,
     sliced_contact,
 )
 from ..spec.fields import SpecError, require
-from .planar import _FIRST_GUESS_INTEGRAL
+from .planar import first_guess, require_load_or_preload
 from .profiles import CircularCrown, Flat, LogarithmicCrown
 from .ring import ARMIJO, MAX_DOUBLINGS, regularised_solve, solve_ring
 from .rollers import NewtonSettings, RollerLoads, RollerSet, check_speed, check_vector
@@ -396,13 +395,7 @@ def solve_sliced(
     load = check_vector("load", load, 4)
     shaft_speed = check_speed(shaft_speed)
     rollers = model.rollers
-    if np.all(load == 0.0) and rollers.diametral_clearance >= 0.0:
-        raise SpecError(
-            "load",
-            tuple(float(v) for v in load),
-            "must be nonzero unless the bearing is preloaded (diametral_clearance < 0): with no load no roller "
-            "is compressed, the contact stiffness vanishes and the ring's position is not determined",
-        )
+    require_load_or_preload(rollers, load)
     if model.slices == 1 and np.any(load[2:] != 0.0):
         raise SpecError(
             "load",
@@ -412,16 +405,12 @@ def solve_sliced(
         )
     ell = model.half_length
     scale = np.array([1.0, 1.0, ell, ell])
-    fc = rollers.centrifugal_force(shaft_speed)
-    equivalent = series_stiffness(rollers.inner_stiffness, rollers.outer_stiffness, rollers.outer_exponent)
-    first_guess = (
-        max(rollers.diametral_clearance / 2.0, 0.0)
-        + (fc / rollers.outer_stiffness) ** (1.0 / rollers.outer_exponent)
-        + (np.linalg.norm(load / scale) / (_FIRST_GUESS_INTEGRAL * rollers.rollers * equivalent))
-        ** (1.0 / rollers.outer_exponent)
-    )
     u, state, iterations, residual = solve_ring(
-        lambda u: _evaluate(model, u, shaft_speed, settings), load, scale, first_guess, settings
+        lambda u: _evaluate(model, u, shaft_speed, settings),
+        load,
+        scale,
+        first_guess(rollers, float(np.linalg.norm(load / scale)), shaft_speed),
+        settings,
     )
     return replace(state, iterations=iterations, residual=residual)
 
