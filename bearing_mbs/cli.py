@@ -28,8 +28,7 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("scenario", help="scenario TOML file (see docs/scenario-format.md)")
     run.add_argument("--out", required=True, help="output directory")
     run.add_argument("--engine", choices=("exudyn", "reference"), help="override [solver] engine")
-    run.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
-                     help="override any spec field, validated like the file (repeatable)")
+    _add_overrides(run)
     run.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     run.add_argument("--animate", action="store_true", help="also write DIR/animation.gif (bearing model)")
     run.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -54,8 +53,7 @@ def _run(args) -> int:
     from .progress import ProgressMeter, TqdmProgress
     from .runner import run_spec, write_outputs
 
-    overrides = list(args.set) + ([f"solver.engine={args.engine}"] if args.engine else [])
-    spec = load_spec(args.scenario, overrides)
+    spec = _load_with_engine(args)
     if args.animate and spec.scenario.model != "bearing":
         raise SpecError("scenario.model", spec.scenario.model, "--animate draws the bearing model only")
     scene, result = run_spec(spec, ProgressMeter() if args.quiet else TqdmProgress())
@@ -74,6 +72,16 @@ def _run(args) -> int:
     return 0
 
 
+def _add_overrides(parser, what: str = "override any spec field, validated like the file (repeatable)") -> None:
+    """The repeatable ``--set SECTION.KEY=VALUE`` option every subcommand shares."""
+    parser.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE", help=what)
+
+
+def _load_with_engine(args):
+    """The scenario with its ``--set`` overrides, and ``--engine`` as ``solver.engine`` when given."""
+    return load_spec(args.scenario, list(args.set) + ([f"solver.engine={args.engine}"] if args.engine else []))
+
+
 def _add_sweep(commands) -> None:
     sweep = commands.add_parser("sweep", help="run a sensitivity study (grid, Latin hypercube, Morris, Sobol) on Dask")
     sweep.add_argument("study", help="study TOML file (see docs/sensitivity.md)")
@@ -81,8 +89,7 @@ def _add_sweep(commands) -> None:
     sweep.add_argument("--scheduler", metavar="ADDRESS", help="Dask scheduler address (default: a local cluster)")
     sweep.add_argument("--workers", type=int, metavar="N",
                        help="local cluster size (default: one per CPU), or workers to wait for on --scheduler")
-    sweep.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
-                       help="override a study-file field, e.g. method.samples=4 (repeatable)")
+    _add_overrides(sweep, "override a study-file field, e.g. method.samples=4 (repeatable)")
     sweep.add_argument("--retry-errors", action="store_true", help="run stored runs that ended in an error again")
     sweep.add_argument("--no-figures", action="store_true", help="report without PNG figures")
     sweep.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -113,8 +120,7 @@ def _add_stiffness(commands) -> None:
         "stiffness", help="quasi-static load distribution and 2x2 stiffness of a bearing scenario (no simulation)")
     stiffness.add_argument("scenario", help="bearing scenario TOML file (model = 'bearing')")
     stiffness.add_argument("--out", required=True, help="output directory: summary.json and load_distribution.png")
-    stiffness.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
-                           help="override any spec field, validated like the file (repeatable)")
+    _add_overrides(stiffness)
     stiffness.add_argument("--no-figures", action="store_true", help="skip the PNG figure")
 
 
@@ -136,8 +142,7 @@ def _add_convergence(commands) -> None:
         "convergence", help="work-precision study: error against run time for the settings in [convergence]")
     convergence.add_argument("scenario", help="scenario TOML file with a [convergence] section")
     convergence.add_argument("--out", required=True, help="output directory; re-running skips finished runs")
-    convergence.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
-                             help="override any spec field (repeatable)")
+    _add_overrides(convergence, "override any spec field (repeatable)")
     convergence.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
@@ -162,8 +167,7 @@ def _add_stability(commands) -> None:
     stability.add_argument("--reduced", action="store_true", help="the reduced suite of the default tests")
     stability.add_argument("--cases", help="comma-separated case names (default: all; see docs/numerics.md)")
     stability.add_argument("--solvers", help="comma-separated engine/method pairs, e.g. reference/rk4,exudyn/rk44")
-    stability.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
-                           help="override any spec field of the base scenario (repeatable)")
+    _add_overrides(stability, "override any spec field of the base scenario (repeatable)")
     stability.add_argument("--no-figures", action="store_true", help="skip the heat map")
 
 
@@ -193,8 +197,7 @@ def _stability(args) -> int:
 def _add_advise(commands) -> None:
     advise = commands.add_parser("advise", help="estimate each explicit solver's stability limit and advise a step")
     advise.add_argument("scenario", help="scenario TOML file")
-    advise.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
-                        help="override any spec field, validated like the file (repeatable)")
+    _add_overrides(advise)
     advise.add_argument("--engine", choices=("exudyn", "reference"), help="override [solver] engine")
     advise.add_argument("--check-slip", action="store_true",
                         help="also run the scenario at its step and at half of it and report spurious slip")
@@ -208,8 +211,7 @@ def _advise(args) -> int:
     from .advisor import advise
     from .builders import build_scene
 
-    overrides = list(args.set) + ([f"solver.engine={args.engine}"] if args.engine else [])
-    spec = load_spec(args.scenario, overrides)
+    spec = _load_with_engine(args)
     scene = build_scene(spec)
     advice = advise(scene)
     print(json.dumps(advice.to_dict(), indent=2) if args.json else advice.report())
