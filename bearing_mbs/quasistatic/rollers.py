@@ -127,16 +127,6 @@ class RollerSet:
         return self.first_roller_angle + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
 
     @property
-    def inner_raceway_diameter(self) -> float:
-        r""":math:`d_i = D_{pw} - D_w - P_d/2` [m]."""
-        return self.pitch_diameter - self.roller_diameter - self.diametral_clearance / 2.0
-
-    @property
-    def outer_raceway_diameter(self) -> float:
-        r""":math:`d_o = D_{pw} + D_w + P_d/2` [m]."""
-        return self.pitch_diameter + self.roller_diameter + self.diametral_clearance / 2.0
-
-    @property
     def contact_clearance(self) -> float:
         r"""Clearance of each roller–raceway pair in the centred bearing, :math:`J_b = P_d/4` [m]."""
         return self.diametral_clearance / 4.0
