@@ -1,6 +1,6 @@
 """bearing_mbs: transient dynamics of rolling bearings on Exudyn, cross-checked by a reference engine."""
 
-from ._numba_cache import invalidate_if_stale
+from bearing_mbs._numba_cache import invalidate_if_stale
 
 invalidate_if_stale()
 

@@ -17,7 +17,8 @@ import argparse
 import logging
 import sys
 
-from .spec import SpecError, load_spec
+from bearing_mbs.spec import SpecError
+from bearing_mbs.models import load_spec
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -50,8 +51,8 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _run(args) -> int:
-    from .progress import ProgressMeter, TqdmProgress
-    from .runner import run_spec, write_outputs
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.runner import run_spec, write_outputs
 
     spec = _load_with_engine(args)
     if args.animate and spec.scenario.model != "bearing":
@@ -61,7 +62,7 @@ def _run(args) -> int:
     if args.animate:
         from pathlib import Path
 
-        from .figures_bearing import animate
+        from bearing_mbs.models.cylindrical_roller.figures import animate
 
         animate(spec, scene, result, Path(args.out) / "animation.gif")
     print(f"{summary['scenario']}: {summary['status']} ({summary['engine']} {summary['solver']}, "
@@ -100,8 +101,8 @@ def _sweep(args) -> int:
     written); 2: bad input, nothing ran."""
     import distributed  # noqa: F401  (configures its loggers on import; quieten them after)
 
-    from .progress import ProgressMeter
-    from .studies.sensitivity import TqdmRunProgress, load_study, run_study
+    from bearing_mbs.core.progress import ProgressMeter
+    from bearing_mbs.studies.sensitivity import TqdmRunProgress, load_study, run_study
 
     logging.getLogger("distributed").setLevel(logging.WARNING)
     study = load_study(args.study, args.set)
@@ -126,7 +127,7 @@ def _add_stiffness(commands) -> None:
 
 def _stiffness(args) -> int:
     """Exit 0: solved and written; 2: bad input, or a load the bearing cannot carry (nothing written)."""
-    from .stiffness import require_bearing, write_stiffness
+    from bearing_mbs.models.cylindrical_roller.stiffness import require_bearing, write_stiffness
 
     spec = load_spec(args.scenario, args.set)
     require_bearing(spec)
@@ -147,8 +148,8 @@ def _add_convergence(commands) -> None:
 
 
 def _convergence(args) -> int:
-    from .progress import ProgressMeter, TqdmProgress
-    from .studies.convergence import study
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.studies.convergence import study
 
     summary = study(load_spec(args.scenario, args.set), args.out, ProgressMeter() if args.quiet else TqdmProgress())
     for target, best in summary["cheapest"].items():
@@ -173,7 +174,7 @@ def _add_stability(commands) -> None:
 
 def _stability(args) -> int:
     """Exit 0: written (failing cells are results, not errors); 2: bad input."""
-    from .studies import stability
+    from bearing_mbs.studies import stability
 
     cases = stability.REDUCED_CASES if args.reduced else stability.CASE_NAMES
     solvers = stability.REDUCED_SOLVERS if args.reduced else stability.SOLVERS
@@ -208,15 +209,15 @@ def _advise(args) -> int:
     """Exit 0: advice printed (and, with --check-slip, the slip converged); 1: spurious slip found; 2: bad input."""
     import json
 
-    from .advisor import advise
-    from .builders import build_scene
+    from bearing_mbs.numerics.advisor import advise
+    from bearing_mbs.models import build_scene
 
     spec = _load_with_engine(args)
     scene = build_scene(spec)
     advice = advise(scene)
     print(json.dumps(advice.to_dict(), indent=2) if args.json else advice.report())
     if advice.applies and not args.json:
-        from .advisor import step_warning
+        from bearing_mbs.numerics.advisor import step_warning
 
         settings = spec.solver.active
         what = f"tolerance {settings.tolerance:g}" if settings.adaptive else f"step {settings.step:g} s"
@@ -225,7 +226,7 @@ def _advise(args) -> int:
               + (f"WARNING {warning}" if warning else "within the advice"))
     if not args.check_slip:
         return 0
-    from .studies.spurious_slip import check_spurious_slip
+    from bearing_mbs.studies.spurious_slip import check_spurious_slip
 
     check = check_spurious_slip(scene, spec.solver, spec.scenario.end_time)
     print(("spurious slip: " if check.spurious else "") + check.message)

@@ -10,13 +10,12 @@ import logging
 import math
 from pathlib import Path
 
-from .analysis import METRICS
-from .builders import build_scene
-from .engines import simulate
-from .progress import ProgressMeter
-from .result import Result
-from .scene import Scene
-from .spec import Spec, to_mapping
+from bearing_mbs.models import MODELS, build_scene
+from bearing_mbs.engines import simulate
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import Result
+from bearing_mbs.core.scene import Scene
+from bearing_mbs.spec import Spec, to_mapping
 
 log = logging.getLogger(__name__)
 
@@ -52,21 +51,19 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
     }
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")
-    summary.update(METRICS[spec.scenario.model](spec, scene, result))
+    summary.update(MODELS[spec.scenario.model].metrics(spec, scene, result))
     return {key: _json_safe(value) for key, value in summary.items()}
 
 
 def write_outputs(spec: Spec, scene: Scene, result: Result, directory: str | Path, figures: bool = True) -> dict:
     """Write the result file first (never lost), then summary.json, then the figures."""
-    from .figures import FIGURES
-
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     result.save(directory / RESULT_FILE)
     summary = summarize(spec, scene, result)
     write_json(directory / SUMMARY_FILE, summary)
     if figures:
-        FIGURES[spec.scenario.model](spec, scene, result, directory)
+        MODELS[spec.scenario.model].figures(spec, scene, result, directory)
     return summary
 
 

@@ -16,10 +16,10 @@ import math
 
 from common import write
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import SCENARIOS
+from bearing_mbs.models import build_scene
+from cases import SCENARIOS
 from bearing_mbs.engines import simulate
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models import load_spec
 
 REVOLUTION = 2 * math.pi / (1500 * 2 * math.pi / 60)  # 0.04 s
 GA_STEP = 1e-5

@@ -13,8 +13,8 @@ from __future__ import annotations
 import numpy as np
 from common import best_of, write
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import seed_spec
+from bearing_mbs.models import build_scene
+from cases import seed_spec
 from bearing_mbs.contact import kernel, twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate

@@ -20,10 +20,10 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.analysis.bearing import load_distribution, roller_indices, window
-from bearing_mbs.figures_bearing import cage_slip_series
+from bearing_mbs.models.cylindrical_roller.metrics import load_distribution, roller_indices, window
+from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
 from bearing_mbs.runner import run_spec, summarize
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models import load_spec
 
 BASE = Path(__file__).with_name("cage_models.toml")
 OUT = Path(__file__).resolve().parents[1] / "docs" / "figures"

@@ -30,11 +30,11 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.analysis.bearing import window
-from bearing_mbs.figures_bearing import cage_slip_series
-from bearing_mbs.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.metrics import window
+from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.runner import run_spec, summarize
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models import load_spec
 
 BASE = Path(__file__).with_name("seed_hss_steady.toml")
 OUT = Path(__file__).resolve().parents[1] / "docs" / "figures"

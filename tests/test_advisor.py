@@ -26,7 +26,7 @@ import math
 import numpy as np
 import pytest
 
-from bearing_mbs.advisor import (
+from bearing_mbs.numerics.advisor import (
     Advice,
     BearingLayout,
     advise,
@@ -35,15 +35,16 @@ from bearing_mbs.advisor import (
     stability_polynomial,
     step_warning,
 )
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import SCENARIOS, seed_spec
+from bearing_mbs.models import build_scene
+from cases import SCENARIOS, seed_spec
 from bearing_mbs.contact.friction import ZERO_SLIP_SLOPE
 from bearing_mbs.engines import simulate
 from bearing_mbs.engines.reference.tableaus import DOPRI5, RK4
-from bearing_mbs.geometry import BearingGeometry
-from bearing_mbs.quasistatic import solve_radial
-from bearing_mbs.scene import GROUND, Body, ContactPair, PairLaw, Scene
-from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec, load_spec
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
+from bearing_mbs.core.scene import GROUND, Body, ContactPair, PairLaw, Scene
+from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
+from bearing_mbs.models import load_spec
 
 NOMINAL = SCENARIOS / "seed_hss_steady.toml"
 

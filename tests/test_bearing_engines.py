@@ -16,13 +16,13 @@ References and tolerances (issue 3 acceptance):
 import numpy as np
 import pytest
 
-from bearing_mbs.analysis import bearing as skidding
+from bearing_mbs.models.cylindrical_roller import metrics as skidding
 from bearing_mbs.analysis import energy_balance_error
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import SCENARIOS
+from bearing_mbs.models import build_scene
+from cases import SCENARIOS
 from bearing_mbs.engines import simulate
 from bearing_mbs.runner import summarize
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models import load_spec
 
 SHORT = ["scenario.end_time=0.02", "analysis.start=0.01", "solver.output_interval=1e-4"]
 ENGINES = {

@@ -21,9 +21,9 @@ import numpy as np
 import pytest
 
 from bearing_mbs.cli import main as cli_main
-from bearing_mbs.figures_bearing import animate, bearing_figures
+from bearing_mbs.models.cylindrical_roller.figures import animate, bearing_figures
 from bearing_mbs.runner import run_spec, write_outputs
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models import load_spec
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 STEADY = SCENARIOS / "seed_hss_steady.toml"

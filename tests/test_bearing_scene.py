@@ -15,13 +15,15 @@ import math
 import numpy as np
 import pytest
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import SCENARIOS
+from bearing_mbs.models import build_scene
+from cases import SCENARIOS
 from bearing_mbs.contact import twin
-from bearing_mbs.drivetrain import GearTrain
+from bearing_mbs.models.cylindrical_roller.drivetrain import GearTrain
 from bearing_mbs.engines.reference.constraints import constraint_rows
-from bearing_mbs.geometry import BearingGeometry
-from bearing_mbs.spec import GearTrainSpec, SpecError, load_spec, spec_from_mapping
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.spec import SpecError
+from bearing_mbs.models import load_spec, spec_from_mapping
+from bearing_mbs.models.cylindrical_roller.spec import GearTrainSpec
 
 STEADY = SCENARIOS / "seed_hss_steady.toml"
 Z = 15
@@ -121,8 +123,8 @@ def test_seed_preset_is_the_coherent_document_bearing():
         ("load.radial=-5", "load.radial", ">= 0"),
         ("load.profile=step", "load.profile", None),  # valid: a step to final = 0
         ("contact.pocket.stiffness_model=document", "contact.pocket.stiffness_model", "raceways only"),
-        ("contact.wall.stiffness=1e6", "contact.wall", "not a contact group of model 'bearing'"),
-        ("balls.0.mass=1", "balls", "not of model 'bearing'"),
+        ("contact.wall.stiffness=1e6", "contact.wall", "allowed keys: inner_race"),
+        ("balls.0.mass=1", "balls", "allowed keys: scenario"),
         ("analysis.start=0.2", "analysis.start", "before scenario.end_time"),
     ],
 )

@@ -12,8 +12,8 @@ friction: the document's dead zone is discontinuous, which generalized-alpha can
 import numpy as np
 import pytest
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import seed_spec
+from bearing_mbs.models import build_scene
+from cases import seed_spec
 from bearing_mbs.engines import simulate
 
 WINDOW = ["scenario.end_time=0.3", "contact.wall.friction_law=erf", "contact.ball.friction_law=erf"]

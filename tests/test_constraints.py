@@ -1,7 +1,7 @@
 """Constraints: the reference engine's projection scheme and Exudyn's distance joint (case 5).
 
 References:
-* a rigid dumbbell in free flight (:func:`bearing_mbs.cases.dumbbell_spec`): its centre of mass follows
+* a rigid dumbbell in free flight (:func:`tests.cases.dumbbell_spec`): its centre of mass follows
   c(t) = c₀ + v t + g t²/2 and the vector between the balls turns at the constant initial rate (closed form).
   Every method must converge to it at its order (fitted, ±0.25; RK4 from its asymptotic range), and the
   projection must hold |c_b − c_a| = L to round-off (1e-14 L) at every output instant.
@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 from bearing_mbs.analysis import constraint_violation
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import DUMBBELL, dumbbell_spec, seed_spec
+from bearing_mbs.models import build_scene
+from cases import DUMBBELL, dumbbell_spec, seed_spec
 from bearing_mbs.engines import simulate
 
 

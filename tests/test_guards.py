@@ -4,8 +4,8 @@ what was computed before is kept."""
 import numpy as np
 import pytest
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import seed_spec
+from bearing_mbs.models import build_scene
+from cases import seed_spec
 from bearing_mbs.engines import simulate
 
 # A step far too large for the contact stiffness: the ball tunnels deep into the floor in one step.

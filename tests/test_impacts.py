@@ -15,8 +15,8 @@ import pytest
 from test_laws import expected_restitution
 
 from bearing_mbs.analysis import energy, restitution_effective
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import seed_spec, single_impact_spec
+from bearing_mbs.models import build_scene
+from cases import seed_spec, single_impact_spec
 from bearing_mbs.contact.normal import DAMPING_FACTOR
 from bearing_mbs.engines import simulate
 

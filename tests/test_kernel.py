@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from bearing_mbs.contact import FRICTION_LAWS, PAIR_KINDS, kernel, twin
-from bearing_mbs.scene import (
+from bearing_mbs.core.scene import (
     GROUND,
     Body,
     ContactPair,

@@ -33,7 +33,7 @@ from bearing_mbs.contact.line_contact import (
     slice_coefficient,
     sliced_contact,
 )
-from bearing_mbs.quasistatic.profiles import CircularCrown, LogarithmicCrown
+from bearing_mbs.models.cylindrical_roller.quasistatic.profiles import CircularCrown, LogarithmicCrown
 
 LENGTH = 0.055  # [m], the primary document's roller length LW
 N_EXP = PALMGREN_EXPONENT

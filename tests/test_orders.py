@@ -4,7 +4,7 @@ References:
 * case 1 (free fall, document eq. 14): y = H − g t²/2 exactly. All methods here integrate a constant
   acceleration exactly (the central difference thanks to its Taylor start), so the tolerance is round-off:
   1e-12 × H.
-* order: :func:`bearing_mbs.cases.ball_in_ring_scene` (permanent contact, smooth friction, velocity-dependent
+* order: :func:`tests.cases.ball_in_ring_scene` (permanent contact, smooth friction, velocity-dependent
   forces), reference solution by scipy's DOP853 at rtol 1e-13 on the numpy twin (an independent integrator).
   The observed order is the least-squares slope of log(error) against log(step) over a halving sequence; it
   must be within ±0.25 of the method's order, and the error at the finest step is bounded absolutely.
@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import ball_in_ring_scene, seed_spec
+from bearing_mbs.models import build_scene
+from cases import ball_in_ring_scene, seed_spec
 from bearing_mbs.contact import twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate

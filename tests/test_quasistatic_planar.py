@@ -21,7 +21,7 @@ import pytest
 from scipy.integrate import quad
 
 from bearing_mbs.contact.line_contact import palmgren_stiffness, series_stiffness
-from bearing_mbs.quasistatic import (
+from bearing_mbs.models.cylindrical_roller.quasistatic import (
     ConvergenceError,
     NewtonSettings,
     RollerSet,

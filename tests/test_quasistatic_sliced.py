@@ -18,7 +18,7 @@ import math
 import numpy as np
 import pytest
 
-from bearing_mbs.quasistatic import (
+from bearing_mbs.models.cylindrical_roller.quasistatic import (
     CircularCrown,
     ConvergenceError,
     Flat,
@@ -275,7 +275,7 @@ def test_planar_state_and_sliced_state_agree_for_flat_rollers_at_a_given_displac
 
 def test_bracketed_safeguard_finds_the_same_roller_equilibrium_as_newton(monkeypatch):
     """The block (v(β), g(β)) safeguard is an independent route to the same equilibrium (1e-9 relative)."""
-    from bearing_mbs.quasistatic import sliced as sliced_module
+    from bearing_mbs.models.cylindrical_roller.quasistatic import sliced as sliced_module
 
     sliced = model(LOGARITHMIC, inner_stiffness=5e9, outer_stiffness=8e9)
     radial, tilt = np.array([3e-6, 1.2e-5, 2.5e-5]), np.array([2e-4, -1e-4, 6e-4])

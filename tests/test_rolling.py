@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 
 from bearing_mbs.analysis import energy
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import seed_spec
+from bearing_mbs.models import build_scene
+from cases import seed_spec
 from bearing_mbs.engines import simulate
 
 MASS, RADIUS, SPEED, G = 0.1, 0.005, 0.2, 10.0

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bearing_mbs.result import Result
+from bearing_mbs.core.result import Result
 from bearing_mbs.studies.sensitivity import (
     IshigamiModel,
     Method,

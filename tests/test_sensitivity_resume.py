@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from bearing_mbs.progress import ProgressMeter
+from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.studies.sensitivity import RunStore, connect, load_study, run_study
 from bearing_mbs.studies.sensitivity.store import DATABASE
 

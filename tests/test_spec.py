@@ -6,9 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from bearing_mbs.builders import build_scene
+from bearing_mbs.models import build_scene
 from bearing_mbs.cli import main
-from bearing_mbs.spec import SpecError, load_spec, spec_from_mapping, to_mapping
+from bearing_mbs.spec import SpecError, to_mapping
+from bearing_mbs.models import load_spec, spec_from_mapping
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 CASE3 = SCENARIOS / "seed_case3.toml"
@@ -68,7 +69,7 @@ def test_fixed_coordinate_must_start_at_rest():
 
 
 def test_explicit_exudyn_solver_with_a_joint_is_rejected_before_running():
-    from bearing_mbs.engines.exudyn_engine import check_supported
+    from bearing_mbs.engines.exudyn.engine import check_supported
 
     spec = load_spec(SCENARIOS / "seed_case5.toml", ["solver.exudyn.method=rk44"])
     with pytest.raises(SpecError) as info:
@@ -77,7 +78,7 @@ def test_explicit_exudyn_solver_with_a_joint_is_rejected_before_running():
 
 
 def test_native_connector_refuses_friction():
-    from bearing_mbs.engines.exudyn_engine import check_supported
+    from bearing_mbs.engines.exudyn.engine import check_supported
 
     spec = load_spec(CASE3, ["solver.exudyn.connector=native"])
     with pytest.raises(SpecError, match="normal forces only"):

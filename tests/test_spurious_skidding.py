@@ -21,11 +21,11 @@ References and tolerances:
 
 import pytest
 
-from bearing_mbs.builders import build_scene
-from bearing_mbs.cases import SCENARIOS
+from bearing_mbs.models import build_scene
+from cases import SCENARIOS
 from bearing_mbs.engines import simulate
 from bearing_mbs.runner import summarize
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models import load_spec
 from bearing_mbs.studies.spurious_slip import check_spurious_slip
 
 END = 2e-3

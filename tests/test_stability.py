@@ -15,8 +15,8 @@ import math
 
 import pytest
 
-from bearing_mbs.cases import SCENARIOS
-from bearing_mbs.spec import load_spec
+from cases import SCENARIOS
+from bearing_mbs.models import load_spec
 from bearing_mbs.studies import stability
 from bearing_mbs.studies.stability import (
     CASE_NAMES,
@@ -67,7 +67,7 @@ def test_failure_reasons_come_from_the_guard_messages():
 
 
 def test_every_case_builds_a_valid_scene():
-    from bearing_mbs.builders import build_scene
+    from bearing_mbs.models import build_scene
 
     base = load_spec(BASE)
     by_name = {case.name: case for case in stability.CASES}

@@ -1,7 +1,7 @@
 """The dynamic bearing model against the quasi-static solution (issue 5; issue 3's steady-running acceptance),
 and the ``bearing-mbs stiffness`` command.
 
-Reference everywhere: :func:`bearing_mbs.quasistatic.solve_radial`, document 003's displacement method with
+Reference everywhere: :func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`, document 003's displacement method with
 Palmgren's law (K = 8.07e10 l^(8/9), n = 10/9) and the same clearance and roller mass, an independent solver
 of the equilibrium that the engines reach by integrating the equations of motion (its own verification:
 tests/test_quasistatic_planar.py against Stribeck/Harris integrals). Method and measured figures:
@@ -19,9 +19,9 @@ import pytest
 
 from bearing_mbs.cli import main
 from bearing_mbs.contact.line_contact import palmgren_stiffness
-from bearing_mbs.geometry import BearingGeometry
-from bearing_mbs.quasistatic import RollerSet, solve_radial
-from bearing_mbs.spec import load_spec
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, solve_radial
+from bearing_mbs.models import load_spec
 from bearing_mbs.studies.static_check import (
     DEFAULT_LOADS,
     DEFAULT_SCENARIO,

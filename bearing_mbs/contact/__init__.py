@@ -11,10 +11,10 @@
 Nothing here imports an engine.
 """
 
-from .friction import FRICTION_LAWS, FRICTION_SIGN, ZERO_SLIP_SLOPE
-from .kernel import PAIR_OUTPUTS
-from .kinematics import PAIR_KINDS
-from .normal import DAMPING_FACTOR, NORMAL_LAWS
+from bearing_mbs.contact.friction import FRICTION_LAWS, FRICTION_SIGN, ZERO_SLIP_SLOPE
+from bearing_mbs.contact.kernel import PAIR_OUTPUTS
+from bearing_mbs.contact.kinematics import PAIR_KINDS
+from bearing_mbs.contact.normal import DAMPING_FACTOR, NORMAL_LAWS
 
 __all__ = [
     "DAMPING_FACTOR",

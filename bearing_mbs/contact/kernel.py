@@ -13,7 +13,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from . import friction, kinematics, normal
+from bearing_mbs.contact import friction, kinematics, normal
 
 #: Columns of the per-pair output array, in order; units: m, m/s, m/s, N, N, N m, W, m/s.
 PAIR_OUTPUTS = ("gap", "gap_rate", "slip", "normal_force", "friction_force", "rolling_moment", "power_loss",

@@ -64,7 +64,7 @@ from typing import NamedTuple
 import numpy as np
 from numba.extending import register_jitable
 
-from .normal import elastic_force
+from bearing_mbs.contact.normal import elastic_force
 
 #: Palmgren's exponent n = 10/9 of the line-contact law Q = K δⁿ [-].
 PALMGREN_EXPONENT = 10.0 / 9.0

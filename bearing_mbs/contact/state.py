@@ -16,8 +16,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from . import normal
-from .kernel import body_trigonometry, pair_motion, pair_position
+from bearing_mbs.contact import normal
+from bearing_mbs.contact.kernel import body_trigonometry, pair_motion, pair_position
 
 EVENT_COLUMNS = ("impact_time", "impact_speed", "separation_time", "separation_speed")
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import friction, kinematics, normal
-from .kernel import N_PAIR_OUTPUTS
+from bearing_mbs.contact import friction, kinematics, normal
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 
 
 def _body_columns(q, index):

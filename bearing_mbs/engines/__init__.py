@@ -1,4 +1,4 @@
-"""Engines: each consumes a scene and returns a :class:`bearing_mbs.result.Result` of the same layout.
+"""Engines: each consumes a scene and returns a :class:`bearing_mbs.core.result.Result` of the same layout.
 
 * ``reference`` — our compiled explicit integrators (:mod:`.reference`).
 * ``exudyn`` — Exudyn rigid bodies with our contact connectors (:mod:`.exudyn_engine`).
@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import logging
 
-from ..progress import ProgressMeter
-from ..result import Result
-from ..scene import Scene
-from ..spec.solver import SolverSpec
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import Result
+from bearing_mbs.core.scene import Scene
+from bearing_mbs.spec.solver import SolverSpec
 
 log = logging.getLogger(__name__)
 
@@ -24,11 +24,11 @@ def simulate(scene: Scene, solver: SolverSpec, end_time: float, progress: Progre
     """Run ``scene`` from 0 to ``end_time`` [s] with the engine and settings of ``solver``."""
     warnings = step_warnings(scene, solver)
     if solver.engine == "reference":
-        from .reference.engine import simulate_reference
+        from bearing_mbs.engines.reference.engine import simulate_reference
 
         result = simulate_reference(scene, solver, end_time, progress, spec)
     else:
-        from .exudyn_engine import simulate_exudyn
+        from bearing_mbs.engines.exudyn.engine import simulate_exudyn
 
         result = simulate_exudyn(scene, solver, end_time, progress, spec)
     if warnings:
@@ -38,7 +38,7 @@ def simulate(scene: Scene, solver: SolverSpec, end_time: float, progress: Progre
 
 def step_warnings(scene: Scene, solver: SolverSpec) -> list[str]:
     """The step advisor's warnings for this run (logged); never fails a run."""
-    from ..advisor import step_warning
+    from bearing_mbs.numerics.advisor import step_warning
 
     try:
         message = step_warning(scene, solver)

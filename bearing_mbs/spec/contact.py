@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..contact.friction import FRICTION_LAWS
-from ..contact.normal import NORMAL_LAWS
-from .fields import SpecError, in_range, non_negative, one_of, positive
+from bearing_mbs.contact.friction import FRICTION_LAWS
+from bearing_mbs.contact.normal import NORMAL_LAWS
+from bearing_mbs.spec.fields import SpecError, in_range, non_negative, one_of, positive
 
 STIFFNESS_MODELS = ("given", "palmgren", "document")
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .fields import SpecError, in_range, one_of, positive, require
-from .solver import CONNECTORS, ENGINES, EXUDYN_METHODS, REFERENCE_METHODS
+from bearing_mbs.spec.fields import SpecError, in_range, one_of, positive, require
+from bearing_mbs.spec.solver import CONNECTORS, ENGINES, EXUDYN_METHODS, REFERENCE_METHODS
 
 #: Error norms (docs/numerics.md): positions for every model; the bearing's skidding quantities.
 NORMS = ("positions", "cage_speed", "roller_loads", "slips")

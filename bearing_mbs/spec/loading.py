@@ -15,7 +15,7 @@ import types
 import typing
 from pathlib import Path
 
-from .fields import SpecError
+from bearing_mbs.spec.fields import SpecError
 
 _MISSING = dataclasses.MISSING
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .fields import SpecError, in_range, one_of, positive
+from bearing_mbs.spec.fields import SpecError, in_range, one_of, positive
 
 #: Reference-engine integrators (``bearing_mbs.engines.reference``).
 REFERENCE_METHODS = ("central_difference", "velocity_verlet", "rk4", "dopri5")

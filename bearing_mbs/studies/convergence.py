@@ -29,14 +29,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..builders import build_scene
-from ..engines import simulate
-from ..progress import ProgressMeter
-from ..result import Result
-from ..runner import write_json
-from ..spec import Spec, SpecError
-from ..spec.convergence import RunSettings
-from .table import append_row, number, read_rows, text
+from bearing_mbs.models import build_scene
+from bearing_mbs.engines import simulate
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import Result
+from bearing_mbs.runner import write_json
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.spec.convergence import RunSettings
+from bearing_mbs.studies.table import append_row, number, read_rows, text
 
 log = logging.getLogger(__name__)
 
@@ -103,7 +103,7 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
     delta = run.position[mask][:, translational] - reference.position[mask][:, translational]
     norms["positions"] = float(np.abs(delta).max() / scale)
     if spec.scenario.model == "bearing":
-        from ..analysis import bearing as skidding
+        from bearing_mbs.models.cylindrical_roller import metrics as skidding
 
         cage_run, cage_ref = skidding.cage_speed(scene, run)[mask], skidding.cage_speed(scene, reference)[mask]
         norms["cage_speed"] = float(abs(cage_run.mean() - cage_ref.mean()) / abs(cage_ref.mean()))
@@ -262,7 +262,7 @@ def _cached_run(spec, scene, run: RunSettings, path: Path, progress) -> Result:
 
 
 def _mapping(spec):
-    from ..spec import to_mapping
+    from bearing_mbs.spec import to_mapping
 
     return json.loads(json.dumps(to_mapping(spec)))
 

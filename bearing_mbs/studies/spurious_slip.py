@@ -23,9 +23,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..result import Result
-from ..scene import Scene
-from ..spec.solver import SolverSpec
+from bearing_mbs.core.result import Result
+from bearing_mbs.core.scene import Scene
+from bearing_mbs.spec.solver import SolverSpec
 
 #: Spurious when slips differ by more than this fraction of the pair's regularisation speed.
 SLIP_TOLERANCE = 0.1
@@ -118,8 +118,8 @@ def _resample(times, series, at):
 def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, result: Result | None = None,
                         refinement: float = 2.0, progress=None) -> SlipCheck:
     """Run ``scene`` at the refined step (and at the given step unless ``result`` is that run) and compare."""
-    from ..advisor import advise
-    from ..engines import simulate
+    from bearing_mbs.numerics.advisor import advise
+    from bearing_mbs.engines import simulate
 
     if result is None:
         result = simulate(scene, solver, end_time, progress)

@@ -47,15 +47,16 @@ from pathlib import Path
 
 import numpy as np
 
-from ..advisor import advise
-from ..analysis import energy_balance_error
-from ..builders import build_scene
-from ..engines import simulate
-from ..progress import ProgressMeter
-from ..runner import write_json
-from ..spec import Spec, SpecError, spec_from_mapping, to_mapping
-from .spurious_slip import compare_slips
-from .stability_cases import (  # noqa: F401  (re-exported: the suite's cases and solvers)
+from bearing_mbs.numerics.advisor import advise
+from bearing_mbs.analysis import energy_balance_error
+from bearing_mbs.models import build_scene
+from bearing_mbs.engines import simulate
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.runner import write_json
+from bearing_mbs.spec import Spec, SpecError, to_mapping
+from bearing_mbs.models import spec_from_mapping
+from bearing_mbs.studies.spurious_slip import compare_slips
+from bearing_mbs.studies.stability_cases import (  # noqa: F401  (re-exported: the suite's cases and solvers)
     ADAPTIVE,
     CASE_NAMES,
     CASES,
@@ -66,8 +67,8 @@ from .stability_cases import (  # noqa: F401  (re-exported: the suite's cases an
     SOLVERS,
     Case,
 )
-from .stability_report import advised_figure, heat_map, markdown, summarize
-from .table import append_row, read_rows, text
+from bearing_mbs.studies.stability_report import advised_figure, heat_map, markdown, summarize
+from bearing_mbs.studies.table import append_row, read_rows, text
 
 log = logging.getLogger(__name__)
 
@@ -342,15 +343,9 @@ def case_spec(base: Spec, case: Case) -> Spec:
 
 
 def _mapping(spec: Spec) -> dict:
-    """The spec as a plain mapping that validates again: no study section, no other model's sections."""
-    from ..spec import MODEL_SECTIONS
-
+    """The spec as a plain mapping that validates again, without the study section."""
     data = json.loads(json.dumps(to_mapping(spec)))
     data.pop("convergence", None)
-    for model, sections in MODEL_SECTIONS.items():
-        if model != spec.scenario.model:
-            for section in sections:
-                data.pop(section, None)
     return data
 
 

@@ -6,7 +6,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from ..spec import Spec
+from bearing_mbs.spec import Spec
 
 CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
 FORCE_GROUPS = ("inner_race", "outer_race", "pocket")  # the groups whose stiffness a case scales
@@ -28,8 +28,8 @@ def _contact(data, key, value, groups=CONTACT_GROUPS):
 
 def _stiffness(factor):
     def change(data, spec):
-        from ..builders.bearing import group_law
-        from ..geometry import BearingGeometry
+        from bearing_mbs.models.cylindrical_roller.build import group_law
+        from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 
         geometry = BearingGeometry.from_spec(spec.bearing)
         for group in FORCE_GROUPS:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .table import number
+from bearing_mbs.studies.table import number
 
 
 def summarize(rows: list[dict]) -> dict:

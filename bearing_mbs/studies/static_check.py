@@ -1,6 +1,6 @@
 r"""Quasi-static cross-check of the dynamic bearing model (issue 5, and issue 3's steady-running check).
 
-The quasi-static planar solver (:func:`bearing_mbs.quasistatic.solve_radial`, document 003's displacement
+The quasi-static planar solver (:func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`, document 003's displacement
 method) is the independent reference: it shares the Palmgren law and the geometry with the dynamic model,
 but none of its kinematics, integrators or contact bookkeeping.
 
@@ -24,13 +24,13 @@ At rest the step residuals are tiny: Exudyn's relative Newton tolerance must not
 (``scenarios/static_check.toml`` sets 1e-6; at 1e-8 generalized-α halves its step again and again, 50 times
 the cost for the same equilibrium). At rest the rollers do not orbit, so the reference solution has roller 0
 at azimuth 0 (as the scene) and no centrifugal force. With gravity, the reference load includes the inner
-ring's weight (:func:`bearing_mbs.stiffness.quasi_static_load`); ``scenarios/static_check.toml`` turns
+ring's weight (:func:`bearing_mbs.models.cylindrical_roller.stiffness.quasi_static_load`); ``scenarios/static_check.toml`` turns
 gravity off so that the unloaded rollers and the cage rest without rattling.
 
 Linearised stiffness
 --------------------
 Central differences of static equilibria: :math:`C_{:,i} = (u(F + \Delta F e_i) - u(F - \Delta F e_i))/2\Delta F`,
-:math:`K = C^{-1}`, against the analytic tangent matrix of :func:`~bearing_mbs.quasistatic.solve_radial` and
+:math:`K = C^{-1}`, against the analytic tangent matrix of :func:`~bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial` and
 against the same differences of the quasi-static solution (which separate the truncation error of the
 differences from the dynamic model's error). Palmgren's tangent stiffness :math:`nK\delta^{1/9}` has an
 infinite slope at :math:`\delta = 0`, so a roller on the edge of the loaded zone makes finite differences
@@ -55,10 +55,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..spec import Spec, SpecError, load_spec
-from ..spec.bearing import AnalysisSpec, DriveSpec, LoadSpec
-from ..spec.fields import in_range, one_of, positive, require
-from ..stiffness import quasi_static_load, require_bearing, solve_scenario
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.models import load_spec
+from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
+from bearing_mbs.spec.fields import in_range, one_of, positive, require
+from bearing_mbs.models.cylindrical_roller.stiffness import quasi_static_load, require_bearing, solve_scenario
 
 log = logging.getLogger(__name__)
 
@@ -158,8 +159,8 @@ def static_equilibrium(spec: Spec, applied, settings: SettlingSettings = Settlin
                        engine: str | None = None) -> StaticEquilibrium:
     """Settle the scenario's bearing at rest under ``applied`` = (F_x, F_y) [N] on ``engine`` (default: the
     scenario's) and measure it."""
-    from ..analysis.bearing import pair_columns, roller_orbit_angles
-    from ..runner import run_spec
+    from bearing_mbs.models.cylindrical_roller.metrics import pair_columns, roller_orbit_angles
+    from bearing_mbs.runner import run_spec
 
     settled_spec = settle_spec(spec, applied, settings, engine)
     scene, result = run_spec(settled_spec)
@@ -243,7 +244,7 @@ class StiffnessCheck:
 
     dynamic: central differences of the engine's static equilibria with steps ±``step`` [N] along x and y;
     secant: the same differences of the quasi-static solution; analytic: the tangent matrix of
-    :func:`~bearing_mbs.quasistatic.solve_radial`. Errors are spectral norms relative to ‖analytic‖.
+    :func:`~bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`. Errors are spectral norms relative to ‖analytic‖.
     """
 
     engine: str
@@ -301,7 +302,7 @@ def running_comparison(spec: Spec, scene, result, phases: int = 12) -> dict:
     Returns the dynamic and quasi-static values and the relative errors ``max_roller_load_error``,
     ``displacement_error`` (magnitudes), and ``cage_speed_error`` = cage_speed_ratio − 1.
     """
-    from ..analysis.bearing import bearing_metrics
+    from bearing_mbs.models.cylindrical_roller.metrics import bearing_metrics
 
     require(phases >= 1, "phases", phases, "must be >= 1")
     metrics = bearing_metrics(spec, scene, result)

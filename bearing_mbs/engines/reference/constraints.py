@@ -26,7 +26,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ...contact import kinematics
+from bearing_mbs.contact import kinematics
 
 PROJECTION_TOLERANCE = 1e-14
 MAX_PROJECTION_ITERATIONS = 20

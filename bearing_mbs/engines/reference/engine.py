@@ -7,14 +7,14 @@ import time
 
 import numpy as np
 
-from ...contact.kernel import N_PAIR_OUTPUTS, scene_forces
-from ...contact.state import initial_pair_state, penetration_bounds
-from ...progress import ProgressMeter
-from ...result import FAILED, SUCCESS, Result, Stats
-from ...scene import Scene
-from ...spec.solver import SolverSpec
-from . import integrators as ig
-from .tableaus import TABLEAUS
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS, scene_forces
+from bearing_mbs.contact.state import initial_pair_state, penetration_bounds
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import FAILED, SUCCESS, Result, Stats
+from bearing_mbs.core.scene import Scene
+from bearing_mbs.spec.solver import SolverSpec
+from bearing_mbs.engines.reference import integrators as ig
+from bearing_mbs.engines.reference.tableaus import TABLEAUS
 
 _CHUNKS = 100
 _NO_TABLEAU = (np.zeros((0, 0)), np.zeros(0), np.zeros(0), np.zeros(0), 0, False)
@@ -150,6 +150,6 @@ def penetration_message(scene, solver, t, k, q, v, step) -> str:
 
 
 def _gap_of(scene, k, q, v):
-    from ...contact import twin
+    from bearing_mbs.contact import twin
 
     return float(twin.pair_geometry(scene.pack().pairs, q, v)[0][k])

@@ -33,9 +33,9 @@ import math
 import numba
 import numpy as np
 
-from ...contact.kernel import scene_forces
-from ...contact.state import advance_pair_state
-from .constraints import (
+from bearing_mbs.contact.kernel import scene_forces
+from bearing_mbs.contact.state import advance_pair_state
+from bearing_mbs.engines.reference.constraints import (
     add_constraint_accelerations,
     length_scale,
     project_positions,

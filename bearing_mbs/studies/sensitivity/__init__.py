@@ -17,20 +17,20 @@ or all at once: ``run_study(study, "out/drop_morris", workers=2)``; on the comma
 See ``docs/sensitivity.md``.
 """
 
-from .analysis import Indices, analyze
-from .execution import EvaluationStats, TqdmRunProgress, connect, evaluate, run_table
-from .models import (
+from bearing_mbs.studies.sensitivity.analysis import Indices, analyze
+from bearing_mbs.studies.sensitivity.execution import EvaluationStats, TqdmRunProgress, connect, evaluate, run_table
+from bearing_mbs.studies.sensitivity.models import (
     BUILTIN_MODELS,
     IshigamiModel,
     RunModel,
     SimulationModel,
     ishigami_indices,
 )
-from .pipeline import StudyResult, run_study, write_report
-from .runs import Run, plan, run_key
-from .sampling import sample
-from .store import RunStore
-from .study import (
+from bearing_mbs.studies.sensitivity.pipeline import StudyResult, run_study, write_report
+from bearing_mbs.studies.sensitivity.runs import Run, plan, run_key
+from bearing_mbs.studies.sensitivity.sampling import sample
+from bearing_mbs.studies.sensitivity.store import RunStore
+from bearing_mbs.studies.sensitivity.study import (
     ANALYZERS,
     DISTRIBUTIONS,
     SAMPLERS,

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .study import Study
+from bearing_mbs.studies.sensitivity.study import Study
 
 log = logging.getLogger(__name__)
 

@@ -20,11 +20,11 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ...progress import ProgressMeter
-from ...spec import SpecError
-from .runs import ERROR, MAX_ATTEMPTS, Run, evaluate_runs, plan, task_error
-from .store import RunStore
-from .study import Study
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.spec import SpecError
+from bearing_mbs.studies.sensitivity.runs import ERROR, MAX_ATTEMPTS, Run, evaluate_runs, plan, task_error
+from bearing_mbs.studies.sensitivity.store import RunStore
+from bearing_mbs.studies.sensitivity.study import Study
 
 log = logging.getLogger(__name__)
 

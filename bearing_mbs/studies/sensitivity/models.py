@@ -23,8 +23,9 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ...spec import SpecError, apply_override, read_toml, spec_from_mapping, to_mapping
-from ...spec.loading import parse_override
+from bearing_mbs.spec import SpecError, apply_override, read_toml, to_mapping
+from bearing_mbs.models import spec_from_mapping
+from bearing_mbs.spec.loading import parse_override
 
 RESULT_FILE = "result.npz"
 
@@ -86,7 +87,7 @@ class SimulationModel(RunModel):
         return to_mapping(spec_from_mapping(data))
 
     def evaluate(self, data: dict, keep_result: bool = False) -> tuple[dict, dict[str, bytes]]:
-        from ...runner import run_spec, summarize
+        from bearing_mbs.runner import run_spec, summarize
 
         spec = spec_from_mapping(data)
         scene, result = run_spec(spec)

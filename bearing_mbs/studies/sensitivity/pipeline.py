@@ -10,13 +10,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ...progress import ProgressMeter
-from .analysis import Indices, analyze
-from .execution import EvaluationStats, connect, evaluate
-from .runs import plan
-from .sampling import sample
-from .store import RunStore
-from .study import Study
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.studies.sensitivity.analysis import Indices, analyze
+from bearing_mbs.studies.sensitivity.execution import EvaluationStats, connect, evaluate
+from bearing_mbs.studies.sensitivity.runs import plan
+from bearing_mbs.studies.sensitivity.sampling import sample
+from bearing_mbs.studies.sensitivity.store import RunStore
+from bearing_mbs.studies.sensitivity.study import Study
 
 log = logging.getLogger(__name__)
 
@@ -73,6 +73,6 @@ def run_study(study: Study, out, client=None, scheduler: str | None = None, work
 def write_report(study: Study, table: pd.DataFrame, indices: dict[str, Indices], directory, figures: bool = True,
                  title_level: int = 1) -> Path:
     """:func:`.report.write_report`, imported on first use (matplotlib is needed only for the report)."""
-    from .report import write_report as write
+    from bearing_mbs.studies.sensitivity.report import write_report as write
 
     return write(study, table, indices, directory, figures, title_level)

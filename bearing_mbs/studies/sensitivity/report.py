@@ -16,8 +16,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from .analysis import Indices
-from .study import Study
+from bearing_mbs.studies.sensitivity.analysis import Indices
+from bearing_mbs.studies.sensitivity.study import Study
 
 REPORT_FILE = "report.md"
 RUNS_FILE = "runs.csv"

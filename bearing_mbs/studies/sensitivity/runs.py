@@ -21,8 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .models import RunModel
-from .study import Study
+from bearing_mbs.studies.sensitivity.models import RunModel
+from bearing_mbs.studies.sensitivity.study import Study
 
 SUCCESS, FAILED, ERROR = "success", "failed", "error"
 #: A run is attempted at most this often: a failure is retried once, then recorded with its error.
@@ -51,7 +51,7 @@ def plan(study: Study, X: np.ndarray) -> tuple[list[str], dict[str, Run]]:
     Every row is validated by the model (a :class:`~bearing_mbs.spec.SpecError` names the row and its
     values), so bad input stops the study before anything runs.
     """
-    from ...spec import SpecError
+    from bearing_mbs.spec import SpecError
 
     X = np.asarray(X, dtype=float)
     if X.ndim != 2 or X.shape[1] != len(study.parameters):

@@ -11,7 +11,7 @@ import itertools
 
 import numpy as np
 
-from .study import Parameter, Study
+from bearing_mbs.studies.sensitivity.study import Parameter, Study
 
 
 def grid_values(parameter: Parameter, levels: int | None) -> list:

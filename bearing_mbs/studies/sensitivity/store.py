@@ -25,9 +25,9 @@ import shutil
 import sqlite3
 from pathlib import Path
 
-from ... import __version__
-from ...spec import SpecError
-from .runs import ERROR, Run
+from bearing_mbs import __version__
+from bearing_mbs.spec import SpecError
+from bearing_mbs.studies.sensitivity.runs import ERROR, Run
 
 log = logging.getLogger(__name__)
 

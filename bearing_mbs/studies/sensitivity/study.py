@@ -15,10 +15,10 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ...spec import SpecError
-from ...spec.fields import in_range, one_of, require
-from ...spec.loading import apply_override, from_mapping, parse_override
-from .models import BUILTIN_MODELS, RunModel, SimulationModel
+from bearing_mbs.spec import SpecError
+from bearing_mbs.spec.fields import in_range, one_of, require
+from bearing_mbs.spec.loading import apply_override, from_mapping, parse_override
+from bearing_mbs.studies.sensitivity.models import BUILTIN_MODELS, RunModel, SimulationModel
 
 #: Sampling designs: full-factorial grid, Latin hypercube, Morris trajectories, Sobol'–Saltelli.
 SAMPLERS = ("grid", "latin", "morris", "sobol")

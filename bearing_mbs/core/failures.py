@@ -1,0 +1,37 @@
+"""Why a run stopped early, as data: a typed code in :attr:`bearing_mbs.core.result.Result.failure`.
+
+Code that reacts to a failure compares kinds, never message text (as diffrax's ``RESULTS`` and scipy's
+``OdeResult.status``). The message of a result is made from its kind and the state where the run stopped.
+The integer values are also the status codes the compiled reference integrator returns.
+"""
+
+from __future__ import annotations
+
+import enum
+
+
+class Failure(enum.IntEnum):
+    """The kind of a run's stop. ``NONE``: the run reached its end time."""
+
+    NONE = 0
+    #: a coordinate became NaN or infinite
+    NONFINITE = 1
+    #: a pair penetrated beyond its guard (``solver.penetration_limit`` of its radius)
+    PENETRATION = 2
+    #: the adaptive step fell below 1e-14 of the time
+    STEP_UNDERFLOW = 3
+    #: the constraint projection did not converge
+    PROJECTION_FAILED = 4
+    #: a body moved faster than ``solver.speed_limit``
+    BLOWUP = 5
+    #: the engine's own solver gave up (Exudyn: Newton's method did not converge, or the solver stopped)
+    SOLVER_FAILED = 6
+
+    @property
+    def diverged(self) -> bool:
+        """The state ran away: the usual remedy is a smaller step or an implicit solver."""
+        return self in (Failure.NONFINITE, Failure.BLOWUP)
+
+    @property
+    def label(self) -> str:
+        return self.name.lower()

@@ -1,0 +1,112 @@
+"""The three ways contact forces reach Exudyn (``[solver.exudyn] connector``).
+
+* ``compiled`` — one ``ObjectGenericODE2`` over all body nodes whose force user function calls the numba
+  kernel (:func:`bearing_mbs.contact.kernel.scene_forces`). Measured fastest (EXUDYN_NOTES.md §B).
+* ``python`` — the same object calling the numpy twin (:mod:`bearing_mbs.contact.twin`).
+* ``native`` — Exudyn's own C++ ``ObjectContactSphereSphere`` per pair, for the normal force only. Its
+  Hunt–Crossley model has damping factor 3(1 − e_HC)/2, so ``e_HC = 1 − 2d/3`` reproduces any law of the
+  hysteresis family with factor d (for Lankarani–Nikravesh, e_HC = (1 + e²)/2). A circle–line pair becomes
+  a sphere of radius :data:`LINE_AS_SPHERE_RADIUS` × r_b tangent to the line below the ball's start; its
+  gap differs from the line's by x²/(2R) for a lateral excursion x.
+
+Loads and drives always go through a (compiled or numpy) GenericODE2, added only when a scene has them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearing_mbs.contact import kernel, twin
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
+from bearing_mbs.core.scene import GROUND, PairArrays, Scene
+from bearing_mbs.spec.fields import SpecError
+
+LINE_AS_SPHERE_RADIUS = 1e6
+
+
+def native_restitution(damping_factor: float) -> float:
+    """Exudyn Hunt–Crossley restitution e_HC with the same damping factor d: e_HC = 1 − 2d/3."""
+    return 1.0 - 2.0 * damping_factor / 3.0
+
+
+def check_native(scene: Scene) -> None:
+    """The native connector carries the normal force of the hysteresis family only."""
+    for pair in scene.pairs:
+        law = pair.law
+        if pair.kind == "circle_line" and pair.body_a != GROUND:
+            raise SpecError("solver.exudyn.connector", "native",
+                            f"represents lines fixed to the ground only, not pair {pair.name!r}")
+        if law.friction_law != "none" or law.friction_coefficient > 0 or law.rolling_resistance_arm > 0:
+            raise SpecError("solver.exudyn.connector", "native",
+                            f"carries normal forces only, but pair {pair.name!r} has friction or rolling "
+                            f"resistance; use connector = compiled")
+        if not 0 < native_restitution(law.damping_factor) <= 1:
+            raise SpecError("solver.exudyn.connector", "native",
+                            f"cannot represent pair {pair.name!r}: its damping factor {law.damping_factor:.3g} "
+                            f"needs e_HC = 1 - 2d/3 in (0, 1]; use connector = compiled")
+
+
+class ForceConnector:
+    """A force user function over all body nodes, counting its evaluations."""
+
+    def __init__(self, packed, reference: np.ndarray, latched: np.ndarray, compiled: bool):
+        self.packed, self.reference, self.latched = packed, reference, latched
+        self.evaluate = kernel.scene_forces if compiled else twin.scene_forces
+        self.evaluations = 0
+        self._q = np.empty_like(reference)
+        self._forces = np.empty_like(reference)
+        self._pairs = np.empty((packed.pairs.kind.size, N_PAIR_OUTPUTS))
+
+    def __call__(self, mbs, t, item_number, q, q_t):
+        self.evaluations += 1
+        np.add(self.reference, q, out=self._q)  # Exudyn passes displacements from the reference
+        self.evaluate(self.packed, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs, False)
+        return self._forces
+
+
+def without_pairs(packed) -> tuple:
+    """The packed scene with no contact pairs (for loads and drives next to native contacts)."""
+    empty = PairArrays(*(np.zeros((0,) + np.shape(column)[1:], dtype=np.asarray(column).dtype)
+                         for column in packed.pairs))
+    return packed._replace(pairs=empty)
+
+
+def add_native_contacts(mbs, scene: Scene, body_objects: list[int], ground_object: int) -> None:
+    """One ObjectContactSphereSphere per pair (normal force only)."""
+    from exudyn.itemInterface import (
+        MarkerBodyRigid,
+        NodeGenericData,
+        ObjectContactSphereSphere,
+    )
+
+    q0, _ = scene.initial_state()
+    for pair in scene.pairs:
+        law = pair.law
+        marker_b = mbs.AddMarker(MarkerBodyRigid(bodyNumber=body_objects[pair.body_b], localPosition=[0, 0, 0]))
+        owner = ground_object if pair.body_a == GROUND else body_objects[pair.body_a]
+        radius_a, anchor = pair.radius_a, list(pair.anchor)
+        if pair.kind == "circle_line":
+            # a huge sphere tangent to the line, centred below the ball's start position
+            big = LINE_AS_SPHERE_RADIUS * pair.radius_b
+            nx, ny = pair.direction
+            bx, by = q0[3 * pair.body_b], q0[3 * pair.body_b + 1]
+            along = (bx - anchor[0]) * -ny + (by - anchor[1]) * nx
+            anchor = [anchor[0] - ny * along - nx * big, anchor[1] + nx * along - ny * big]
+            radius_a = big
+        marker_a = mbs.AddMarker(MarkerBodyRigid(bodyNumber=owner, localPosition=[*anchor, 0]))
+        data = mbs.AddNode(NodeGenericData(initialCoordinates=[1.0, 0, 0, 0], numberOfDataCoordinates=4))
+        hollow = pair.kind == "circle_in_circle"
+        mbs.AddObject(
+            ObjectContactSphereSphere(
+                markerNumbers=[marker_b, marker_a] if hollow else [marker_a, marker_b],
+                nodeNumber=data,
+                spheresRadii=[pair.radius_b, radius_a] if hollow else [radius_a, pair.radius_b],
+                isHollowSphere1=hollow,
+                contactStiffness=law.stiffness,
+                contactStiffnessExponent=law.exponent,
+                contactDamping=0.0,
+                impactModel=1,
+                restitutionCoefficient=native_restitution(law.damping_factor),
+                minimumImpactVelocity=law.approach_speed_floor,
+            )
+        )

@@ -1,0 +1,281 @@
+"""The Exudyn engine: a scene as Exudyn planar rigid bodies, run by an Exudyn solver.
+
+* bodies: ``NodeRigidBody2D`` + ``ObjectRigidBody2D``; a fixed coordinate is a ground
+  ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
+* gravity: ``LoadMassProportional`` per body, only when gravity is non-zero;
+* contacts, loads and drives: see :mod:`.exudyn_connectors`;
+* distance constraints: ``ObjectConnectorDistance``; point-on-line constraints (the constraint cage):
+  ``ObjectJointPrismatic2D`` with ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers
+  reject joints, EXUDYN_NOTES.md §1, §5);
+* per-pair state (latched approach speeds), events, output, the energy audit (trapezoid rule over accepted
+  steps) and run guards: a ``PostStepUserFunction``, once per accepted step, calling the same compiled
+  :func:`bearing_mbs.contact.state.advance_pair_state` as the reference engine.
+
+Exudyn's console output (printed through Python) is captured into ``result.metadata["exudyn_log"]``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import math
+import time
+
+import numpy as np
+
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS, scene_forces
+from bearing_mbs.contact.state import advance_pair_state, initial_pair_state
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import FAILED, SUCCESS, Result, Stats
+from bearing_mbs.core.scene import DistanceConstraint, Scene
+from bearing_mbs.spec.fields import SpecError
+from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
+from bearing_mbs.engines.exudyn.connectors import (
+    ForceConnector,
+    add_native_contacts,
+    check_native,
+    without_pairs,
+)
+from bearing_mbs.engines.reference.engine import diverged_message, output_grid, penetration_message
+
+
+def check_supported(scene: Scene, solver: SolverSpec) -> None:
+    """Reject, before anything runs, what Exudyn cannot do with these settings."""
+    settings = solver.exudyn
+    if scene.constraints and not settings.implicit:
+        raise SpecError("solver.exudyn.method", settings.method,
+                        "Exudyn's explicit solvers reject joints; with constraints use generalized_alpha "
+                        "or trapezoidal_index2, or the reference engine")
+    if settings.connector == "native":
+        check_native(scene)
+
+
+def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
+                    spec: dict | None = None) -> Result:
+    import exudyn as exu
+    from exudyn.itemInterface import (
+        LoadMassProportional,
+        MarkerBodyMass,
+        MarkerBodyPosition,
+        MarkerBodyRigid,
+        MarkerNodeCoordinate,
+        NodePointGround,
+        NodeRigidBody2D,
+        ObjectConnectorCoordinate,
+        ObjectConnectorDistance,
+        ObjectGenericODE2,
+        ObjectGround,
+        ObjectJointPrismatic2D,
+        ObjectRigidBody2D,
+    )
+
+    check_supported(scene, solver)
+    settings = solver.exudyn
+    progress = progress or ProgressMeter()
+    packed = scene.pack()
+    n = scene.coordinate_count
+    reference, _ = scene.initial_state()
+    latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
+
+    container = exu.SystemContainer()
+    mbs = container.AddSystem()
+    nodes = [mbs.AddNode(NodeRigidBody2D(referenceCoordinates=list(b.position), initialVelocities=list(b.velocity)))
+             for b in scene.bodies]
+    bodies = [mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=b.mass, inertia=b.inertia))
+              for node, b in zip(nodes, scene.bodies)]
+
+    ground_marker = None
+    for node, body in zip(nodes, scene.bodies):
+        for c in range(3):
+            if not body.free[c]:
+                if ground_marker is None:
+                    ground_node = mbs.AddNode(NodePointGround())
+                    ground_marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground_node, coordinate=0))
+                marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))
+                mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[ground_marker, marker]))
+
+    if any(scene.gravity):
+        for body in bodies:
+            marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
+            mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
+
+    joints = []
+    for constraint in scene.constraints:
+        if isinstance(constraint, DistanceConstraint):
+            markers = [mbs.AddMarker(MarkerBodyPosition(bodyNumber=bodies[i], localPosition=[0, 0, 0]))
+                       for i in (constraint.body_a, constraint.body_b)]
+            joints.append(mbs.AddObject(ObjectConnectorDistance(markerNumbers=markers, distance=constraint.length)))
+        else:  # the centre of b on a line of a: (p_a − c_b)·n = 0 with n normal to the line, in a's frame
+            on_line = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_a],
+                                                    localPosition=[*constraint.anchor, 0]))
+            centre = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_b], localPosition=[0, 0, 0]))
+            dx, dy = constraint.direction
+            joints.append(mbs.AddObject(ObjectJointPrismatic2D(markerNumbers=[centre, on_line], axisMarker0=[1, 0, 0],
+                                                               normalMarker1=[-dy, dx, 0], constrainRotation=False)))
+
+    connector = None
+    native = settings.connector == "native"
+    if native:
+        add_native_contacts(mbs, scene, bodies, mbs.AddObject(ObjectGround()) if scene.pairs else -1)
+    force_scene = without_pairs(packed) if native else packed
+    if force_scene.pairs.kind.size or force_scene.load_body.size or force_scene.drive_body.size:
+        # loads and drives next to native contacts go through the compiled kernel
+        connector = ForceConnector(force_scene, reference, latched, compiled=settings.connector != "python")
+        connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
+        connector.evaluations = 0
+        mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector))
+
+    monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
+                           lambda: [_joint_force(mbs, exu, joint) for joint in joints])
+    mbs.SetPostStepUserFunction(monitor)
+    mbs.Assemble()
+
+    simulation = _simulation_settings(exu, settings, end_time)
+    log = io.StringIO()
+    progress.start(end_time, f"{scene.name} (exudyn {settings.method}, {settings.connector})")
+    started = time.perf_counter()
+    try:
+        with contextlib.redirect_stdout(log):  # Exudyn prints through Python
+            solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType,
+                                                                     EXUDYN_METHODS[settings.method]))
+    except Exception as error:  # Exudyn raises when a solver gives up
+        solved = False
+        if not monitor.message:
+            monitor.fail(_solver_failure(scene, settings, monitor.time, str(error)))
+    finally:
+        wall = time.perf_counter() - started
+        progress.close()
+    exudyn_log = log.getvalue()
+
+    iteration = mbs.sys["dynamicSolver"].it
+    stats = Stats(
+        steps=int(iteration.currentStepIndex) - 1,  # Exudyn counts from 1
+        rejected_steps=int(iteration.rejectedAutomaticStepSizeSteps),
+        force_evaluations=None if native else connector.evaluations if connector else 0,
+        newton_iterations=int(iteration.newtonStepsCount),
+        jacobian_evaluations=int(iteration.newtonJacobiCount),
+        wall_time_s=wall,
+    )
+    if not solved and not monitor.message:
+        monitor.fail(_solver_failure(scene, settings, monitor.time, _last_line(exudyn_log)))
+    if monitor.message:
+        monitor.record_final()
+    out_t, out_q, out_v, out_pairs, out_work, out_constraints = monitor.outputs()
+    return Result(
+        engine="exudyn", method=settings.method, step=settings.step, time=out_t, position=out_q, velocity=out_v,
+        pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events, body_names=tuple(b.name for b in scene.bodies),
+        pair_names=tuple(p.name for p in scene.pairs), stats=stats,
+        status=FAILED if monitor.message else SUCCESS, message=monitor.message, spec=spec,
+        metadata={"connector": settings.connector, "exudyn_log": exudyn_log, "exudyn_version": exu.__version__},
+    )
+
+
+def _simulation_settings(exu, settings, end_time):
+    s = exu.SimulationSettings()
+    s.solution.file.write = False
+    s.show.computationTime = False
+    s.show.statistics = False
+    ti = s.timeIntegration
+    ti.verboseMode = 0
+    ti.endTime = end_time
+    ti.numberOfSteps = max(1, math.ceil(end_time / settings.step * (1 - 1e-12)))
+    ti.discontinuous.useRecommendedStepSize = False  # EXUDYN_NOTES.md §2f
+    ti.explicit.computeEndOfStepAccelerations = False  # saves one force evaluation per step
+    # Implicit solvers halve the step where Newton fails (stick-slip transitions, contact onsets) and recover;
+    # on smooth problems the step stays the requested one.
+    ti.adaptiveStep = True
+    ti.automaticStepSize = settings.adaptive
+    ti.absoluteTolerance = settings.tolerance
+    ti.relativeTolerance = settings.tolerance
+    ti.minimumStepSize = 1e-14
+    ti.generalizedAlpha.spectralRadius = settings.spectral_radius
+    ti.newton.relativeTolerance = settings.tolerance
+    return s
+
+
+def _joint_force(mbs, exu, joint) -> float:
+    """Magnitude of a joint's reaction force [N]."""
+    kind = exu.OutputVariableType
+    output = kind.Force if "Distance" in mbs.GetObject(joint)["objectType"] else kind.ForceLocal
+    return float(np.linalg.norm(mbs.GetObjectOutput(joint, output)))
+
+
+def _solver_failure(scene, settings, t, detail) -> str:
+    what = "Newton's method did not converge" if settings.implicit else "the solver stopped"
+    hint = ""
+    if settings.implicit and any(p.law.friction_law == "dead_zone" for p in scene.pairs):
+        hint = " The dead_zone friction law is discontinuous, which Newton's method cannot follow: use erf."
+    return (f"t = {t:.6g} s: Exudyn's {settings.method} failed: {what} ({detail}). Likely fix: reduce the step "
+            f"(now {settings.step:g} s).{hint}")
+
+
+def _last_line(text: str) -> str:
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    return lines[-1] if lines else "no message"
+
+
+class _StepMonitor:
+    """PostStepUserFunction: per-pair state, events, output at output instants, guards, progress."""
+
+    def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress,
+                 constraint_forces):
+        self.scene, self.packed, self.reference = scene, packed, reference
+        self.latched, self.events, self.bounds = latched, events, bounds
+        self.solver, self.progress, self.constraint_forces = solver, progress, constraint_forces
+        self.output_times = output_grid(end_time, solver.output_interval)
+        self.margin = 1e-3 * solver.exudyn.step
+        self.rows: list[tuple] = []
+        self.message, self.time = "", 0.0
+        self.q, self.v = reference.copy(), np.array([b.velocity for b in scene.bodies], dtype=float).ravel()
+        self._forces = np.empty(reference.size)
+        self._pairs = np.empty((len(latched), N_PAIR_OUTPUTS))
+        self.work = np.zeros(2)  # supplied, dissipated [J]
+        self._power = np.array(self._evaluate(0.0))
+        self._progress_every, self._calls = max(1, int(end_time / solver.exudyn.step / 200)), 0
+        self._record(0.0, [0.0] * len(scene.constraints))
+
+    def _evaluate(self, t, complete=False):
+        return scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, self._pairs, complete)
+
+    def _record(self, t, constraint_forces=None):
+        self._evaluate(t, complete=True)
+        forces = self.constraint_forces() if constraint_forces is None else constraint_forces
+        self.rows.append((t, self.q.copy(), self.v.copy(), self._pairs.copy(), self.work.copy(), np.array(forces)))
+
+    def __call__(self, mbs, t):
+        data = mbs.systemData
+        q = self.reference + np.asarray(data.GetODE2Coordinates())[: self.reference.size]
+        v = np.asarray(data.GetODE2Coordinates_t())[: self.reference.size]
+        step = self.solver.exudyn.step
+        finite = np.isfinite(q) & np.isfinite(v)
+        speed = np.hypot(v[0::3], v[1::3])
+        if not finite.all() or speed.max() > self.solver.speed_limit:
+            coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
+            return self.fail(diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
+                                              step, blown_up=finite.all()))
+        h = t - self.time
+        self.q, self.v, self.time = q, v, t
+        power = np.array(self._evaluate(t))  # before the latch update: the forces of the step just taken
+        self.work += 0.5 * h * (self._power + power)
+        self._power = power
+        _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
+        if worst >= 0:
+            return self.fail(penetration_message(self.scene, self.solver, t, worst, q, v, step))
+        if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
+            self._record(t)
+        self._calls += 1
+        if self._calls % self._progress_every == 0:
+            self.progress.update(t)
+        return True
+
+    def fail(self, message: str) -> bool:
+        self.message = self.message or message
+        return False  # tells Exudyn to stop after this step
+
+    def record_final(self):
+        if self.rows[-1][0] < self.time:
+            self._record(self.time)
+
+    def outputs(self):
+        """time, position, velocity, pair outputs, work, constraint forces, as arrays."""
+        return tuple(np.array([row[i] for row in self.rows]) for i in range(6))

@@ -1,0 +1,213 @@
+"""Builder of the ``bearing`` model: the planar caged cylindrical roller bearing of the primary document.
+
+Bodies, in this order: the inner ring, the cage (penalty and constraint models), the Z rollers. The outer
+ring is fixed: it is the ground. Per roller: an inner-raceway pair (circle–circle) and an outer-raceway pair
+(circle inside the hollow outer raceway); then, by cage model,
+
+* ``penalty``: four pocket pairs, roller against the document's pocket edges P and Q and their mirrors
+  inside the pitch circle (circle–point; see :mod:`bearing_mbs.geometry`);
+* ``constraint``: the roller centre held on its pocket's radial line (a point-on-line constraint);
+* ``none``: no cage body, and a roller–roller pair between neighbours (Z pairs).
+
+A land-guided cage adds one cage–land pair. The inner ring turns under a velocity servo or the gear train;
+the radial load, the gear mesh load, gravity and the lubricant's drag on each roller are added only when
+non-zero.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from bearing_mbs.contact.line_contact import (
+    PALMGREN_EXPONENT,
+    STEEL_EFFECTIVE_MODULUS,
+    effective_modulus,
+    palmgren_stiffness,
+)
+from bearing_mbs.models.cylindrical_roller.drivetrain import GearTrain
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.lubrication import palmgren_drag_moment, roller_drag_coefficient
+from bearing_mbs.core.scene import (
+    GROUND,
+    Body,
+    ContactPair,
+    Drag,
+    Load,
+    PointOnLineConstraint,
+    Profile,
+    Scene,
+    VelocityServo,
+)
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.models.building import initial_gaps, pair_law
+
+RPM = 2 * math.pi / 60
+#: The primary document's raceway laws K δ^1.3 (annex II: KI, KE, NI = NE).
+DOCUMENT_STIFFNESS = {"inner_race": 3e10, "outer_race": 4e10}
+DOCUMENT_EXPONENT = 1.3
+
+INNER_RING, CAGE = 0, 1
+
+
+def build_bearing_scene(spec: Spec) -> Scene:
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    caged = spec.cage.model != "none"
+    first_roller = 2 if caged else 1
+    drive = spec.drive
+    train = GearTrain(drive.gear_train) if drive.kind == "gear_train" else None
+
+    inner_speed = initial_inner_speed(spec)
+    rolling = drive.initial_state == "rolling"
+    cage_speed = geometry.epicyclic_cage_speed(inner_speed) if rolling else 0.0
+    spin = geometry.epicyclic_roller_spin(inner_speed) if rolling else 0.0
+    ring_inertia = geometry.inner_ring_inertia + (train.reduced_inertia if train else 0.0)
+
+    bodies = [Body("inner_ring", geometry.inner_ring_mass, ring_inertia, (0.0, 0.0, 0.0), (0.0, 0.0, inner_speed))]
+    if caged:
+        bodies.append(Body("cage", geometry.cage_mass, geometry.cage_inertia, (0.0, 0.0, 0.0), (0.0, 0.0, cage_speed)))
+    radius = geometry.pitch_diameter / 2
+    for k, psi in enumerate(geometry.roller_angles):
+        x, y = radius * math.cos(psi), radius * math.sin(psi)
+        bodies.append(Body(f"roller{k}", geometry.roller_mass, geometry.roller_inertia, (x, y, 0.0),
+                           (-cage_speed * y, cage_speed * x, spin)))
+
+    laws = {group: group_law(spec, geometry, group) for group in ("inner_race", "outer_race", "pocket", "land", "roller")}
+    r_w = geometry.roller_diameter / 2
+    pairs, constraints = [], []
+    for k in range(geometry.rollers):
+        roller = first_roller + k
+        pairs.append(ContactPair(f"roller{k}-inner_race", "circle_circle", INNER_RING, roller, laws["inner_race"],
+                                 radius_b=r_w, radius_a=geometry.inner_race_diameter / 2))
+        pairs.append(ContactPair(f"roller{k}-outer_race", "circle_in_circle", GROUND, roller, laws["outer_race"],
+                                 radius_b=r_w, radius_a=geometry.outer_race_diameter / 2))
+        if spec.cage.model == "penalty":
+            for label, point in geometry.pocket_points(k).items():
+                pairs.append(ContactPair(f"roller{k}-pocket_{label}", "circle_point", CAGE, roller, laws["pocket"],
+                                         radius_b=r_w, anchor=point))
+        elif spec.cage.model == "constraint":
+            psi = geometry.roller_angles[k]
+            constraints.append(PointOnLineConstraint(f"roller{k}-pocket_line", CAGE, roller, (0.0, 0.0),
+                                                     (math.cos(psi), math.sin(psi))))
+        else:
+            neighbour = first_roller + (k + 1) % geometry.rollers
+            pairs.append(ContactPair(f"roller{k}-roller{(k + 1) % geometry.rollers}", "circle_circle", roller,
+                                     neighbour, laws["roller"], radius_b=r_w, radius_a=r_w))
+    if caged and spec.bearing.cage_guidance == "inner_land":
+        pairs.append(ContactPair("cage-inner_land", "circle_in_circle", CAGE, INNER_RING, laws["land"],
+                                 radius_b=geometry.inner_land_radius, radius_a=geometry.cage_bore_radius))
+    elif caged and spec.bearing.cage_guidance == "outer_land":
+        pairs.append(ContactPair("cage-outer_land", "circle_in_circle", GROUND, CAGE, laws["land"],
+                                 radius_b=geometry.cage_outer_radius, radius_a=geometry.outer_land_radius))
+
+    loads, drives = [], []
+    load = spec.load
+    if load.radial > 0 or load.final > 0 or (load.profile == "table" and any(load.values)):
+        angle = math.radians(load.angle)
+        loads.append(Load("radial_load", INNER_RING, (math.cos(angle), math.sin(angle), 0.0), load_profile(spec)))
+    if train is not None:
+        end = spec.scenario.end_time
+        loads.append(Load("drive_torque", INNER_RING, (0.0, 0.0, 1.0),
+                          Profile((0.0, end), (train.drive_torque(0.0), train.drive_torque(end)))))
+        (fx0, fy0), (fx1, fy1) = train.bearing_load(0.0), train.bearing_load(end)
+        loads.append(Load("mesh_load_x", INNER_RING, (1.0, 0.0, 0.0), Profile((0.0, end), (fx0, fx1))))
+        loads.append(Load("mesh_load_y", INNER_RING, (0.0, 1.0, 0.0), Profile((0.0, end), (fy0, fy1))))
+    else:
+        gain = ring_inertia / drive.servo_time_constant
+        drives.append(VelocityServo("speed_servo", INNER_RING, gain, speed_profile(spec)))
+
+    drags = tuple(Drag(f"roller{k}-drag", first_roller + k, coefficient) for k in range(geometry.rollers)
+                  if (coefficient := roller_drag(spec, geometry)) > 0)
+    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), tuple(loads), tuple(drives),
+                  drags, gravity=(0.0, -spec.scenario.gravity))
+    _reject_initial_overlap(scene, geometry)
+    return scene
+
+
+def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
+    """Viscous drag coefficient [N s/m] on each roller centre from ``[lubricant]`` (0 without drag)."""
+    lubricant = spec.lubricant
+    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec)
+    if lubricant.model == "none" or not reference_rpm:
+        return 0.0
+    moment = lubricant.drag_moment
+    if moment is None:
+        moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.viscosity, reference_rpm, geometry.pitch_diameter)
+    return roller_drag_coefficient(moment, geometry.rollers, geometry.pitch_diameter,
+                                   geometry.epicyclic_cage_speed(reference_rpm * RPM))
+
+
+def highest_speed_rpm(spec: Spec) -> float:
+    """The drive's highest speed [rpm]: the operating speed of a ramp or table (start-up, stop)."""
+    drive = spec.drive
+    if drive.kind == "speed" and drive.profile == "ramp":
+        return max(abs(drive.from_rpm), abs(drive.speed_rpm))
+    if drive.kind == "speed" and drive.profile == "table":
+        return max(abs(s) for s in drive.speeds_rpm)
+    return abs(drive.speed_rpm)
+
+
+def initial_inner_speed(spec: Spec) -> float:
+    """Inner-ring speed at t = 0 [rad/s]."""
+    drive = spec.drive
+    if drive.kind == "gear_train" or drive.profile == "constant":
+        return drive.speed_rpm * RPM
+    if drive.profile == "ramp":
+        return drive.from_rpm * RPM
+    return float(np.interp(0.0, drive.times, drive.speeds_rpm)) * RPM
+
+
+def speed_profile(spec: Spec) -> Profile:
+    """The servo's target speed [rad/s] against time."""
+    drive = spec.drive
+    if drive.profile == "constant":
+        return Profile.constant(drive.speed_rpm * RPM)
+    if drive.profile == "ramp":
+        end = drive.start + drive.duration
+        return Profile((0.0, drive.start, end), (drive.from_rpm * RPM, drive.from_rpm * RPM, drive.speed_rpm * RPM))
+    return Profile(tuple(drive.times), tuple(s * RPM for s in drive.speeds_rpm))
+
+
+def load_profile(spec: Spec) -> Profile:
+    """The radial load's magnitude [N] against time."""
+    load = spec.load
+    end = load.start + load.duration
+    if load.profile == "constant":
+        return Profile.constant(load.radial)
+    if load.profile == "step":
+        return Profile((0.0, load.start, end), (load.radial, load.radial, load.final))
+    if load.profile == "ramp":
+        return Profile((0.0, load.start, end), (0.0, 0.0, load.radial))
+    return Profile(tuple(load.times), tuple(load.values))
+
+
+def group_law(spec: Spec, geometry: BearingGeometry, group: str):
+    """The pair law of a contact group, with its stiffness model resolved."""
+    contact = getattr(spec.contact, group)
+    if contact.stiffness_model == "given":
+        return pair_law(contact)
+    if contact.stiffness_model == "document":
+        if group not in DOCUMENT_STIFFNESS:
+            raise SpecError(f"contact.{group}.stiffness_model", "document",
+                            "the primary document gives stiffnesses for the raceways only (its KC is '?')")
+        return pair_law(contact, stiffness=DOCUMENT_STIFFNESS[group], exponent=DOCUMENT_EXPONENT)
+    bearing = spec.bearing
+    other = bearing.cage_material if group in ("pocket", "land") else bearing.roller_material
+    first = bearing.ring_material if group == "land" else bearing.roller_material
+    if group in ("inner_race", "outer_race"):
+        other = bearing.ring_material
+    length = bearing.cage_width if group == "land" else geometry.roller_length
+    modulus = effective_modulus(first.youngs_modulus, first.poisson_ratio, other.youngs_modulus, other.poisson_ratio)
+    stiffness = palmgren_stiffness(length) * modulus / STEEL_EFFECTIVE_MODULUS
+    return pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT)
+
+
+def _reject_initial_overlap(scene: Scene, geometry: BearingGeometry) -> None:
+    """Only a preload may make raceway pairs overlap at the start; anything else is a geometry error."""
+    preload = geometry.clearance < 0
+    for pair, gap in zip(scene.pairs, initial_gaps(scene)):
+        raceway = pair.name.endswith("_race")
+        if gap < -1e-12 and not (raceway and preload):
+            raise SpecError("bearing", pair.name, f"overlaps by {-gap:.3g} m at the start: check the cage and "
+                            f"land geometry")

@@ -1,0 +1,140 @@
+r"""Derived bearing geometry, masses, inertias and epicyclic kinematics (one place for these formulas).
+
+Conventions (also those of :mod:`bearing_mbs.quasistatic`): the inner raceway diameter is
+:math:`d_i = D_{pw} - D_w - P_d/2` and the outer :math:`d_o = D_{pw} + D_w + P_d/2`, so :math:`D_{pw}` is their
+mean and :math:`P_d` the diametral clearance (negative: preload). Roller k sits at azimuth
+:math:`\psi_k = 2\pi k/Z` (the document's :math:`2\pi(k-1)/Z`, counted from 0).
+
+Pocket edges (document eq. 45, with the denominator corrected to :math:`D_{pw} D_c/2`): the points P and Q of
+pocket k lie on the cage circle :math:`D_c` at :math:`\psi_k \pm \gamma` with
+
+.. math:: \cos\gamma = \frac{(D_{pw}/2)^2 + (D_c/2)^2 - (D_w/2 + H)^2}{D_{pw} D_c / 2},
+
+so a centred roller is exactly :math:`H` from each edge. Edges on one circle outside the roller centres hold
+the cage round the circle but hardly radially: a roller-guided cage drifts out of the bearing. Real pocket
+bars wrap the roller on both sides of the pitch circle, so we add the mirror edges P', Q' on the circle
+:math:`2D_{pw} - D_c` inside it (same construction), and the pocket holds its roller from both sides.
+
+Epicyclic (no-slip) kinematics with the outer ring fixed: cage speed
+:math:`\omega_c = \omega_i (1 - D_w/D_{pw})/2`, roller spin (absolute) :math:`\omega_r = -\omega_c D_{pw}/D_w`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from bearing_mbs.models.cylindrical_roller.spec import BearingSpec
+
+
+@dataclass(frozen=True)
+class BearingGeometry:
+    """Numbers derived from a :class:`BearingSpec` [SI]."""
+
+    rollers: int
+    roller_diameter: float
+    roller_length: float
+    pitch_diameter: float
+    clearance: float
+    inner_race_diameter: float
+    outer_race_diameter: float
+    cage_diameter: float
+    pocket_clearance: float
+    pocket_angle: float  # γ [rad]
+    roller_mass: float
+    roller_inertia: float
+    cage_mass: float
+    cage_inertia: float
+    inner_ring_mass: float
+    inner_ring_inertia: float
+    inner_land_radius: float  # on the inner ring, for an inner-land-guided cage [m]
+    cage_bore_radius: float
+    cage_outer_radius: float
+    outer_land_radius: float  # on the outer ring, for an outer-land-guided cage [m]
+
+    @classmethod
+    def from_spec(cls, spec: BearingSpec) -> BearingGeometry:
+        z, d_w, length = spec.rollers, spec.roller_diameter, spec.roller_length
+        pitch, clearance = spec.pitch, spec.clearance
+        d_c, h, t = spec.cage_diameter, spec.pocket_clearance, spec.cage_thickness
+        roller_mass = spec.roller_material.density * math.pi * d_w**2 * length / 4
+        # the cage: an annulus of thickness t and width w around D_c, less Z pocket windows (D_w + 2H) × L_w
+        cage_volume = math.pi * d_c * t * spec.cage_width - z * (d_w + 2 * h) * length * t
+        cage_mass = spec.cage_material.density * cage_volume
+        r_out, r_in = (d_c + t) / 2, (d_c - t) / 2
+        inner_race = pitch - d_w - clearance / 2
+        ring_mass = spec.ring_material.density * math.pi * (inner_race**2 - spec.inner_ring_bore**2) / 4 * spec.ring_width
+        land = spec.land_clearance or 0.0
+        return cls(
+            rollers=z,
+            roller_diameter=d_w,
+            roller_length=length,
+            pitch_diameter=pitch,
+            clearance=clearance,
+            inner_race_diameter=inner_race,
+            outer_race_diameter=pitch + d_w + clearance / 2,
+            cage_diameter=d_c,
+            pocket_clearance=h,
+            pocket_angle=pocket_angle(pitch, d_c, d_w, h),
+            roller_mass=roller_mass,
+            roller_inertia=roller_mass * d_w**2 / 8,
+            cage_mass=cage_mass,
+            cage_inertia=cage_mass * (r_out**2 + r_in**2) / 2,
+            inner_ring_mass=ring_mass + spec.supported_mass,
+            # ring annulus, plus the supported shaft share as a solid shaft of the bore's diameter
+            inner_ring_inertia=(ring_mass * (inner_race**2 + spec.inner_ring_bore**2) / 8
+                                + spec.supported_mass * spec.inner_ring_bore**2 / 8),
+            inner_land_radius=r_in - land / 2,
+            cage_bore_radius=r_in,
+            cage_outer_radius=r_out,
+            outer_land_radius=r_out + land / 2,
+        )
+
+    @property
+    def roller_angles(self) -> np.ndarray:
+        """ψ_k = 2πk/Z [rad]."""
+        return 2 * np.pi * np.arange(self.rollers) / self.rollers
+
+    def epicyclic_cage_speed(self, inner_speed):
+        """ω_c [rad/s] at inner-ring speed ω_i, see :func:`epicyclic_cage_speed`."""
+        return epicyclic_cage_speed(inner_speed, self.roller_diameter, self.pitch_diameter)
+
+    def epicyclic_roller_spin(self, inner_speed):
+        """Absolute roller spin ω_r = −ω_c D_pw/D_w [rad/s] (no slip at the fixed outer raceway)."""
+        return -self.epicyclic_cage_speed(inner_speed) * self.pitch_diameter / self.roller_diameter
+
+    def pocket_points(self, k: int) -> dict[str, tuple[float, float]]:
+        """Pocket edges of pocket k in the cage frame [m]: P and Q on the cage circle at ψ_k ± γ (document),
+        P_inner and Q_inner on the mirror circle 2D_pw − D_c (ours)."""
+        psi = self.roller_angles[k]
+        inner_diameter = 2 * self.pitch_diameter - self.cage_diameter
+        inner_angle = pocket_angle(self.pitch_diameter, inner_diameter, self.roller_diameter, self.pocket_clearance)
+        points = {}
+        for suffix, diameter, angle in (("", self.cage_diameter, self.pocket_angle),
+                                        ("_inner", inner_diameter, inner_angle)):
+            for label, sign in (("P", 1), ("Q", -1)):
+                points[label + suffix] = (diameter / 2 * math.cos(psi + sign * angle),
+                                          diameter / 2 * math.sin(psi + sign * angle))
+        return points
+
+    def roller_set(self):
+        """The same bearing for the quasi-static solver (Palmgren raceway laws)."""
+        from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet
+
+        return RollerSet(rollers=self.rollers, pitch_diameter=self.pitch_diameter,
+                         roller_diameter=self.roller_diameter, roller_length=self.roller_length,
+                         diametral_clearance=self.clearance, roller_mass=self.roller_mass)
+
+
+def epicyclic_cage_speed(inner_speed, roller_diameter, pitch_diameter):
+    """ω_c = ω_i (1 − D_w/D_pw)/2 [rad/s]: the cage speed of pure rolling with the outer ring fixed."""
+    return inner_speed * (1 - roller_diameter / pitch_diameter) / 2
+
+
+def pocket_angle(pitch_diameter: float, cage_diameter: float, roller_diameter: float, pocket_clearance: float):
+    """γ [rad] of document eq. 45 (denominator corrected)."""
+    cosine = ((pitch_diameter / 2) ** 2 + (cage_diameter / 2) ** 2 - (roller_diameter / 2 + pocket_clearance) ** 2) / (
+        pitch_diameter * cage_diameter / 2)
+    return math.acos(cosine)

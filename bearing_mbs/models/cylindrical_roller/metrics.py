@@ -1,0 +1,138 @@
+r"""Skidding metrics of the bearing model, in the style of the skidding literature.
+
+All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` (default: the second half).
+
+* ``cage_speed_ratio``: mean cage speed over the mean epicyclic speed :math:`\omega_i(1 - D_w/D_{pw})/2`
+  (for a full-complement bearing, the rollers' mean orbital speed); ``cage_slip`` = 1 − that ratio.
+* slip ratio of a roller at a raceway: slip speed over rolling (entrainment) speed at the contact,
+  :math:`s = v_{slip}/u`; 0 in pure rolling, ±2 when one surface stands still. Only contacts carrying at least
+  ``load_fraction`` of the largest raceway load at that instant count (so a load drop does not hide them),
+  and only while the rolling speed exceeds the contact's friction regularisation speed (below it the ratio
+  of two vanishing speeds means nothing: a bearing at standstill). ``max_roller_slip`` is the largest
+  :math:`|s|`.
+* roller loads: inner-raceway contact forces against the roller's orbital angle ψ = atan2(y, x) (0 along +x,
+  counter-clockwise), binned every 360/(2Z) degrees; ``max_roller_load`` is the largest inner-raceway force.
+* ``inner_ring_displacement``: magnitude of the mean inner-ring centre position [m] (its components in
+  ``inner_ring_offset``).
+* ``max_pocket_force``: the largest roller–pocket force, a pocket pair's (penalty cage) or a constraint's
+  (constraint cage) [N].
+* ``energy_balance_error``: see :func:`bearing_mbs.analysis.energy_balance_error`.
+* ``max_cage_eccentricity``: the largest distance of the cage centre from the bearing axis [m]; beyond half
+  a roller diameter the cage has left its rollers, and ``warnings`` says so.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.analysis import energy_balance_error
+
+
+def window(spec, result) -> np.ndarray:
+    """Boolean mask of the output instants in the analysis window."""
+    start = spec.analysis.start if spec.analysis.start is not None else spec.scenario.end_time / 2
+    mask = result.time >= start - 1e-12
+    return mask if mask.any() else np.ones_like(result.time, dtype=bool)
+
+
+def roller_indices(scene) -> np.ndarray:
+    return np.array([i for i, body in enumerate(scene.bodies) if body.name.startswith("roller")])
+
+
+def pair_columns(scene, suffix: str) -> np.ndarray:
+    return np.array([k for k, pair in enumerate(scene.pairs) if pair.name.endswith(suffix)], dtype=int)
+
+
+def cage_speed(scene, result) -> np.ndarray:
+    """Cage angular speed [rad/s] (T,): the cage body's, or the rollers' mean orbital speed without a cage."""
+    names = [b.name for b in scene.bodies]
+    if "cage" in names:
+        return result.velocity[:, 3 * names.index("cage") + 2]
+    rollers = roller_indices(scene)
+    x, y = result.position[:, 3 * rollers], result.position[:, 3 * rollers + 1]
+    vx, vy = result.velocity[:, 3 * rollers], result.velocity[:, 3 * rollers + 1]
+    return np.mean((x * vy - y * vx) / (x**2 + y**2), axis=1)
+
+
+def slip_ratios(scene, result, race: str, load_fraction: float) -> np.ndarray:
+    """(T, Z) slip ratios at ``race`` ('inner_race' or 'outer_race'); NaN where the contact carries less
+    than ``load_fraction`` of the largest roller load."""
+    columns = pair_columns(scene, f"-{race}")
+    force = result.pair_series("normal_force")[:, columns]
+    slip, rolling = result.pair_series("slip")[:, columns], result.pair_series("rolling_speed")[:, columns]
+    largest = result.pair_series("normal_force")[:, pair_columns(scene, "_race")].max(axis=1, keepdims=True)
+    loaded = (force > 0) & (force >= load_fraction * largest)
+    rolling_floor = np.array([scene.pairs[k].law.regularisation_speed for k in columns])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = slip / np.abs(rolling)
+    return np.where(loaded & (np.abs(rolling) > rolling_floor), ratio, np.nan)
+
+
+def roller_orbit_angles(scene, result) -> np.ndarray:
+    """(T, Z) orbital angle of each roller [rad] in [0, 2π)."""
+    rollers = roller_indices(scene)
+    return np.mod(np.arctan2(result.position[:, 3 * rollers + 1], result.position[:, 3 * rollers]), 2 * np.pi)
+
+
+def load_distribution(scene, result, mask, bins: int) -> tuple[np.ndarray, np.ndarray]:
+    """Mean inner-raceway load [N] against orbital angle [deg] (bin centres) over the instants in ``mask``."""
+    angle = np.degrees(roller_orbit_angles(scene, result)[mask]).ravel()
+    force = result.pair_series("normal_force")[mask][:, pair_columns(scene, "-inner_race")].ravel()
+    edges = np.linspace(0, 360, bins + 1)
+    which = np.clip(np.digitize(angle, edges) - 1, 0, bins - 1)
+    sums = np.bincount(which, weights=force, minlength=bins)
+    counts = np.bincount(which, minlength=bins)
+    with np.errstate(invalid="ignore"):
+        return 0.5 * (edges[1:] + edges[:-1]), np.where(counts > 0, sums / np.maximum(counts, 1), np.nan)
+
+
+def bearing_metrics(spec, scene, result) -> dict:
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    mask = window(spec, result)
+    inner_speed = result.velocity[:, 2]
+    epicyclic = geometry.epicyclic_cage_speed(inner_speed)
+    ratio = float(np.mean(cage_speed(scene, result)[mask]) / np.mean(epicyclic[mask]))
+    fraction = spec.analysis.load_fraction
+    slips = {race: slip_ratios(scene, result, race, fraction)[mask] for race in ("inner_race", "outer_race")}
+    inner_loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "-inner_race")]
+    angles, loads = load_distribution(scene, result, mask, 2 * geometry.rollers)
+    offset = result.position[mask][:, :2].mean(axis=0)
+
+    pocket = [k for k, pair in enumerate(scene.pairs) if "-pocket_" in pair.name]
+    if pocket:
+        max_pocket = float(result.pair_series("normal_force")[mask][:, pocket].max())
+    elif scene.constraints:
+        max_pocket = float(result.constraint_forces[mask].max())
+    else:
+        max_pocket = None
+
+    def largest(values):
+        return float(np.nanmax(np.abs(values))) if np.isfinite(values).any() else None
+
+    names = [b.name for b in scene.bodies]
+    eccentricity, warnings = None, []
+    if "cage" in names:
+        cage = names.index("cage")
+        eccentricity = float(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1]).max())
+        if eccentricity > geometry.roller_diameter / 2:
+            warnings.append(f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller "
+                            f"diameter: it has left its rollers and its speed is meaningless")
+
+    return {
+        "mean_inner_speed_rpm": float(np.mean(inner_speed[mask]) * 60 / (2 * np.pi)),
+        "cage_speed_ratio": ratio,
+        "cage_slip": 1.0 - ratio,
+        "max_roller_slip": largest(np.concatenate([slips["inner_race"].ravel(), slips["outer_race"].ravel()])),
+        "max_roller_slip_inner": largest(slips["inner_race"]),
+        "max_roller_slip_outer": largest(slips["outer_race"]),
+        "max_roller_load": float(inner_loads.max()),
+        "roller_loads": [[float(a), None if np.isnan(f) else float(f)] for a, f in zip(angles, loads)],
+        "inner_ring_displacement": float(np.hypot(*offset)),
+        "inner_ring_offset": [float(offset[0]), float(offset[1])],
+        "max_pocket_force": max_pocket,
+        "energy_balance_error": energy_balance_error(scene, result),
+        "max_cage_eccentricity": eccentricity,
+        "analysis_start": float(result.time[mask][0]),
+        "warnings": warnings,
+    }

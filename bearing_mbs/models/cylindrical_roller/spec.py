@@ -1,0 +1,382 @@
+"""Sections of the ``bearing`` model: the planar caged cylindrical roller bearing.
+
+``[bearing]`` geometry and materials (with presets), ``[cage]`` model, ``[drive]`` of the inner ring,
+``[load]`` on it, and ``[analysis]`` settings. All SI: metres, kilograms, newtons, seconds; speeds in rpm
+where the key says so.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from bearing_mbs.spec import ContactSpec, Spec
+from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, one_of, positive, require
+from bearing_mbs.spec.loading import to_mapping
+
+CAGE_MODELS = ("penalty", "constraint", "none")
+CAGE_GUIDANCE = ("rollers", "inner_land", "outer_land")
+SPEED_PROFILES = ("constant", "ramp", "table")
+DRIVE_KINDS = ("speed", "gear_train")
+LOAD_PROFILES = ("constant", "step", "ramp", "table")
+
+
+@dataclass(frozen=True)
+class MaterialSpec:
+    """youngs_modulus [Pa] > 0, poisson_ratio in [0, 0.5), density [kg/m³] > 0."""
+
+    youngs_modulus: float
+    poisson_ratio: float
+    density: float
+
+    def __post_init__(self):
+        positive("youngs_modulus", self.youngs_modulus)
+        in_range("poisson_ratio", self.poisson_ratio, 0.0, 0.5, high_open=True)
+        positive("density", self.density)
+
+
+#: Bearing steel (100Cr6; density as the primary document) and the document's bronze cage.
+STEEL = MaterialSpec(youngs_modulus=208e9, poisson_ratio=0.3, density=7850.0)
+BRONZE = MaterialSpec(youngs_modulus=110e9, poisson_ratio=0.34, density=8890.0)
+
+
+@dataclass(frozen=True)
+class BearingSpec:
+    """``[bearing]``: geometry, materials and the supported mass.
+
+    rollers: Z >= 3. roller_diameter D_w [m], roller_length L_w [m] (effective contact length).
+    Raceways: either ``inner_race_diameter`` and ``outer_race_diameter`` [m], or ``pitch_diameter`` D_pw
+    with ``diametral_clearance`` P_d [m] (negative = preload); then d_i = D_pw − D_w − P_d/2 and
+    d_o = D_pw + D_w + P_d/2. cage_diameter D_c [m]: the circle of the pocket edges P and Q (document eq. 45),
+    inside the rollers' span (D_pw − D_w, D_pw + D_w). pocket_clearance H [m] > 0: the tangential play of a
+    roller in its pocket. cage_guidance: ``rollers`` (default), ``inner_land`` or ``outer_land``, with
+    land_clearance [m] (diametral). cage_thickness, cage_width [m]: the cage ring's section (mass).
+    inner_ring_bore, ring_width [m]: the inner ring's section (mass). supported_mass [kg] >= 0: the share of
+    the shaft's mass the inner ring carries. Materials: ring_material, roller_material, cage_material.
+    """
+
+    rollers: int
+    roller_diameter: float
+    roller_length: float
+    cage_diameter: float
+    pocket_clearance: float
+    cage_thickness: float
+    cage_width: float
+    inner_ring_bore: float
+    ring_width: float
+    pitch_diameter: float | None = None
+    diametral_clearance: float | None = None
+    inner_race_diameter: float | None = None
+    outer_race_diameter: float | None = None
+    cage_guidance: str = "rollers"
+    land_clearance: float | None = None
+    supported_mass: float = 0.0
+    ring_material: MaterialSpec = field(default_factory=lambda: STEEL)
+    roller_material: MaterialSpec = field(default_factory=lambda: STEEL)
+    cage_material: MaterialSpec = field(default_factory=lambda: BRONZE)
+    preset: str = ""
+
+    def __post_init__(self):
+        require(self.rollers >= 3, "rollers", self.rollers, "must be >= 3")
+        for name in ("roller_diameter", "roller_length", "cage_diameter", "pocket_clearance", "cage_thickness",
+                     "cage_width", "inner_ring_bore", "ring_width"):
+            positive(name, getattr(self, name))
+        non_negative("supported_mass", self.supported_mass)
+        by_pitch = (self.pitch_diameter, self.diametral_clearance)
+        by_races = (self.inner_race_diameter, self.outer_race_diameter)
+        if all(v is not None for v in by_pitch) == all(v is not None for v in by_races) or (
+            any(v is not None for v in by_pitch) and any(v is not None for v in by_races)
+        ):
+            raise SpecError("pitch_diameter", self.pitch_diameter,
+                            "give either pitch_diameter with diametral_clearance, or inner_race_diameter with "
+                            "outer_race_diameter")
+        for name in ("pitch_diameter", "inner_race_diameter", "outer_race_diameter"):
+            if getattr(self, name) is not None:
+                positive(name, getattr(self, name))
+        if self.diametral_clearance is not None:
+            finite("diametral_clearance", self.diametral_clearance)
+        self._check_fit()
+        one_of("cage_guidance", self.cage_guidance, CAGE_GUIDANCE)
+        if self.cage_guidance != "rollers":
+            require(self.land_clearance is not None, "land_clearance", None,
+                    f"is required with cage_guidance = {self.cage_guidance}")
+            positive("land_clearance", self.land_clearance)
+
+    @property
+    def pitch(self) -> float:
+        """D_pw [m]."""
+        if self.pitch_diameter is not None:
+            return self.pitch_diameter
+        return 0.5 * (self.inner_race_diameter + self.outer_race_diameter)
+
+    @property
+    def clearance(self) -> float:
+        """P_d [m], negative for preload."""
+        if self.diametral_clearance is not None:
+            return self.diametral_clearance
+        return self.outer_race_diameter - self.inner_race_diameter - 2 * self.roller_diameter
+
+    def _check_fit(self):
+        d_w, pitch, clearance = self.roller_diameter, self.pitch, self.clearance
+        raceway_field = "diametral_clearance" if self.diametral_clearance is not None else "outer_race_diameter"
+        raceway_value = self.diametral_clearance if self.diametral_clearance is not None else self.outer_race_diameter
+        require(clearance <= 0.05 * d_w, raceway_field, raceway_value,
+                f"raceways inconsistent with the roller: the diametral clearance {clearance:.4g} m must be "
+                f"<= 5 % of the roller diameter ({0.05 * d_w:.4g} m)")
+        require(clearance >= -0.002 * d_w, raceway_field, raceway_value,
+                f"preload beyond a sane bound: the diametral interference {-clearance:.4g} m must be <= 0.2 % "
+                f"of the roller diameter ({0.002 * d_w:.4g} m)")
+        require(pitch - d_w - clearance / 2 > 0, raceway_field, raceway_value, "leaves no inner raceway")
+        chord = pitch * math.sin(math.pi / self.rollers)
+        require(d_w + 2 * self.pocket_clearance < chord, "rollers", self.rollers,
+                f"do not fit around the pitch circle: D_w + 2H = {d_w + 2 * self.pocket_clearance:.4g} m must be "
+                f"< the chord between neighbours D_pw sin(π/Z) = {chord:.4g} m")
+        require(pitch - d_w < self.cage_diameter < pitch + d_w, "cage_diameter", self.cage_diameter,
+                f"must lie inside the rollers' span ({pitch - d_w:.4g}, {pitch + d_w:.4g}) m")
+        cosine = ((pitch / 2) ** 2 + (self.cage_diameter / 2) ** 2 - (d_w / 2 + self.pocket_clearance) ** 2) / (
+            pitch * self.cage_diameter / 2)
+        require(-1 < cosine < 1 and 2 * math.acos(cosine) < 2 * math.pi / self.rollers, "pocket_clearance",
+                self.pocket_clearance, "puts the pocket edges of neighbouring rollers past each other")
+
+
+@dataclass(frozen=True)
+class CageSpec:
+    """``[cage]``: model = ``penalty`` (a cage body with pocket contacts), ``constraint`` (each roller centre
+    held on its pocket's radial line) or ``none`` (full complement, roller–roller contacts)."""
+
+    model: str = "penalty"
+
+    def __post_init__(self):
+        one_of("model", self.model, CAGE_MODELS)
+
+
+@dataclass(frozen=True)
+class GearTrainSpec:
+    """``[drive.gear_train]``: the document's two-shaft train (eqs. 40–44), inner ring on the fast shaft 1.
+
+    pinion_radius r1, gear_radius r2 [m]; shaft1_inertia I1 (generator side, reduced to shaft 1) and
+    shaft2_inertia I2 (rotor side, reduced to shaft 2) [kg m²]; generator torque T_R1 = T1RA + T1RB t
+    resisting on shaft 1, rotor torque T_M2 = T2MA + T2MB t driving shaft 2 [N m, N m/s];
+    pressure_angle φ [deg]; load_share PORC in [0, 100] %; mesh_angle [deg]: direction from the pinion
+    centre to the gear centre.
+    """
+
+    pinion_radius: float
+    gear_radius: float
+    shaft1_inertia: float
+    shaft2_inertia: float
+    generator_torque: float
+    generator_torque_rate: float
+    rotor_torque: float
+    rotor_torque_rate: float
+    pressure_angle: float = 20.0
+    load_share: float = 50.0
+    mesh_angle: float = 0.0
+
+    def __post_init__(self):
+        for name in ("pinion_radius", "gear_radius", "shaft1_inertia", "shaft2_inertia"):
+            positive(name, getattr(self, name))
+        for name in ("generator_torque", "generator_torque_rate", "rotor_torque", "rotor_torque_rate",
+                     "mesh_angle"):
+            finite(name, getattr(self, name))
+        in_range("pressure_angle", self.pressure_angle, 0.0, 45.0)
+        in_range("load_share", self.load_share, 0.0, 100.0)
+
+
+@dataclass(frozen=True)
+class DriveSpec:
+    """``[drive]``: how the inner ring turns (the outer ring is fixed).
+
+    kind = ``speed``: a velocity servo (torque gain (speed(t) − ω)) follows ``profile``: ``constant``
+    (``speed_rpm``), ``ramp`` (``from_rpm`` to ``speed_rpm`` between ``start`` and ``start + duration`` [s]:
+    start-up or stop) or ``table`` (``times`` [s], ``speeds_rpm``). servo_time_constant [s] > 0 sets the gain
+    from the inner ring's inertia. kind = ``gear_train``: see :class:`GearTrainSpec`.
+    initial_state: ``rolling`` (rollers and cage start at the epicyclic speeds of the initial inner-ring
+    speed) or ``rest``.
+    """
+
+    kind: str = "speed"
+    profile: str = "constant"
+    speed_rpm: float = 1500.0
+    from_rpm: float = 0.0
+    start: float = 0.0
+    duration: float = 0.0
+    times: tuple[float, ...] = ()
+    speeds_rpm: tuple[float, ...] = ()
+    servo_time_constant: float = 1e-3
+    initial_state: str = "rolling"
+    gear_train: GearTrainSpec | None = None
+
+    def __post_init__(self):
+        one_of("kind", self.kind, DRIVE_KINDS)
+        one_of("profile", self.profile, SPEED_PROFILES)
+        one_of("initial_state", self.initial_state, ("rolling", "rest"))
+        positive("servo_time_constant", self.servo_time_constant)
+        for name in ("speed_rpm", "from_rpm", "start", "duration"):
+            finite(name, getattr(self, name))
+        non_negative("start", self.start)
+        non_negative("duration", self.duration)
+        if self.profile == "table":
+            require(len(self.times) == len(self.speeds_rpm) > 0, "speeds_rpm", list(self.speeds_rpm),
+                    "must have one value per entry of times")
+            require(all(b >= a for a, b in zip(self.times, self.times[1:])), "times", list(self.times),
+                    "must not decrease")
+        if self.kind == "gear_train":
+            require(self.gear_train is not None, "gear_train", None, "is required with kind = gear_train")
+
+
+@dataclass(frozen=True)
+class LoadSpec:
+    """``[load]``: a radial force on the inner ring.
+
+    radial [N] >= 0 at ``angle`` [deg] (direction of the force on the inner ring; −90 = downwards), scaled
+    by ``profile``: ``constant``; ``step`` from ``radial`` to ``final`` [N] at ``start`` over ``duration``
+    [s] (a smooth ramp; 0 is not allowed: a jump); ``ramp`` from 0 to ``radial`` over
+    [start, start + duration]; ``table`` (``times`` [s], ``values`` [N]).
+    """
+
+    radial: float = 0.0
+    angle: float = -90.0
+    profile: str = "constant"
+    final: float = 0.0
+    start: float = 0.0
+    duration: float = 1e-3
+    times: tuple[float, ...] = ()
+    values: tuple[float, ...] = ()
+
+    def __post_init__(self):
+        non_negative("radial", self.radial)
+        finite("angle", self.angle)
+        one_of("profile", self.profile, LOAD_PROFILES)
+        non_negative("final", self.final)
+        non_negative("start", self.start)
+        if self.profile in ("step", "ramp"):
+            positive("duration", self.duration)
+        if self.profile == "table":
+            require(len(self.times) == len(self.values) > 0, "values", list(self.values),
+                    "must have one value per entry of times")
+
+
+@dataclass(frozen=True)
+class LubricantSpec:
+    """``[lubricant]``: load-independent drag of the lubricant on the rollers (:mod:`bearing_mbs.lubrication`).
+
+    model: ``palmgren`` (default) or ``none``. viscosity [m²/s] > 0: kinematic viscosity at operating
+    temperature (default 32e-6, an ISO VG 320 gearbox oil near 80 °C). drag_factor: Palmgren's f_0 in
+    [0.5, 10] (default 2, a cylindrical roller bearing with cage, oil-lubricated). reference_rpm: the speed at
+    which the drag equals Palmgren's M_0 (default: the drive's highest speed). drag_moment [N m] >= 0: M_0 itself,
+    replacing the formula.
+    """
+
+    model: str = "palmgren"
+    viscosity: float = 32e-6
+    drag_factor: float = 2.0
+    reference_rpm: float | None = None
+    drag_moment: float | None = None
+
+    def __post_init__(self):
+        one_of("model", self.model, ("palmgren", "none"))
+        positive("viscosity", self.viscosity)
+        in_range("drag_factor", self.drag_factor, 0.5, 10.0)
+        if self.reference_rpm is not None:
+            positive("reference_rpm", self.reference_rpm)
+        if self.drag_moment is not None:
+            non_negative("drag_moment", self.drag_moment)
+
+
+@dataclass(frozen=True)
+class AnalysisSpec:
+    """``[analysis]``: start [s] of the window over which means are taken (default: the second half of
+    the run); load_fraction: contacts carrying less than this fraction of the largest roller load are
+    left out of slip ratios (their rolling speed is not defined by the load)."""
+
+    start: float | None = None
+    load_fraction: float = 0.05
+
+    def __post_init__(self):
+        if self.start is not None:
+            non_negative("start", self.start)
+        in_range("load_fraction", self.load_fraction, 0.0, 1.0)
+
+
+#: Presets: documented coherent bearings (see docs/bearing.md for the sources and choices).
+PRESETS = {
+    # The primary document's high-speed-shaft bearing made coherent: raceways 0.210/0.260 m kept, so
+    # D_w = (0.260 − 0.210)/2 = 0.025 m at zero clearance (the document's 0.047 m does not fit), D_pw = 0.235 m;
+    # Z = 15, L_w = 0.055 m, H = 1 mm, bronze cage on the pitch circle's outside as the document's
+    # DC = 0.245 m, a 4 mm × 50 mm cage section, an inner ring of bore 0.160 m and width 0.055 m.
+    "seed-hss": {
+        "rollers": 15, "roller_diameter": 0.025, "roller_length": 0.055, "inner_race_diameter": 0.210,
+        "outer_race_diameter": 0.260, "cage_diameter": 0.245, "pocket_clearance": 0.001,
+        "cage_thickness": 0.004, "cage_width": 0.050, "inner_ring_bore": 0.160, "ring_width": 0.055,
+    },
+    # A catalogue-size bearing with the boundary dimensions of an NU 216 (ISO 15 dimension series 02: d = 80 mm,
+    # D = 140 mm, B = 26 mm). The internal geometry is ours: D_pw = (d + D)/2 = 110 mm, 16 rollers of
+    # 15 mm × 15 mm, raceways 95/125 mm at zero clearance. ISO 76 then gives C0 = 44 (1 − D_w/D_pw) Z L_w D_w
+    # = 137 kN, between the static ratings published for NU 216 bearings (120 kN to 166 kN).
+    "nu216": {
+        "rollers": 16, "roller_diameter": 0.015, "roller_length": 0.015, "inner_race_diameter": 0.095,
+        "outer_race_diameter": 0.125, "cage_diameter": 0.114, "pocket_clearance": 0.0004,
+        "cage_thickness": 0.0025, "cage_width": 0.016, "inner_ring_bore": 0.080, "ring_width": 0.026,
+    },
+}
+
+# Contact defaults (docs/bearing.md): Palmgren line contacts, Lankarani–Nikravesh with the approach speed floored at
+# 0.1 m/s (a damping ratio near 0.1 in the load zone instead of an overdamped contact), the annex's erf friction with
+# μ = 0.1 and v_reg = 0.01 m/s, and on the raceways a rolling-resistance arm of 15 µm (f = μ_R/r ≈ 1.2e-3 for the seed
+# roller, the order of catalogue friction coefficients of cylindrical roller bearings, ~0.001).
+SLIDING = ContactSpec(normal_law="lankarani_nikravesh", stiffness_model="palmgren", restitution=0.9,
+                      approach_speed_floor=0.1, friction_law="erf", friction_coefficient=0.1, regularisation_speed=0.01)
+RACEWAY = ContactSpec(**{**to_mapping(SLIDING), "rolling_resistance_arm": 1.5e-5})
+
+
+@dataclass(frozen=True)
+class BearingContact:
+    """``[contact]`` of the bearing model: ``inner_race``, ``outer_race``, ``pocket`` (roller–cage), ``land``
+    (cage–ring land) and ``roller`` (roller–roller). A partial table is merged over the group's default."""
+
+    inner_race: ContactSpec = RACEWAY
+    outer_race: ContactSpec = RACEWAY
+    pocket: ContactSpec = SLIDING
+    land: ContactSpec = SLIDING
+    roller: ContactSpec = SLIDING
+
+
+#: The contact groups of the bearing model, in the order of :class:`BearingContact`.
+CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
+
+
+@dataclass(frozen=True)
+class BearingModelSpec(Spec):
+    """A ``bearing`` scenario: the shared sections plus ``[contact]``, ``[bearing]`` (required), ``[cage]``,
+    ``[drive]``, ``[load]``, ``[lubricant]`` and ``[analysis]``."""
+
+    contact: BearingContact = field(default_factory=BearingContact)
+    bearing: BearingSpec | None = None
+    cage: CageSpec = field(default_factory=CageSpec)
+    drive: DriveSpec = field(default_factory=DriveSpec)
+    load: LoadSpec = field(default_factory=LoadSpec)
+    lubricant: LubricantSpec = field(default_factory=LubricantSpec)
+    analysis: AnalysisSpec = field(default_factory=AnalysisSpec)
+
+    def __post_init__(self):
+        require(self.bearing is not None, "bearing", None, "the bearing model needs a [bearing] section")
+        if self.analysis.start is not None:
+            require(self.analysis.start < self.scenario.end_time, "analysis.start", self.analysis.start,
+                    "must be before scenario.end_time")
+
+
+def with_preset(data: dict) -> dict:
+    """Put a ``[bearing] preset``'s values under the keys the file does not give (before validation)."""
+    bearing = data.get("bearing")
+    if isinstance(bearing, dict) and bearing.get("preset"):
+        name = bearing["preset"]
+        if name not in PRESETS:
+            raise SpecError("bearing.preset", name, f"must be one of {', '.join(PRESETS)}")
+        given = set(bearing)
+        if given & {"pitch_diameter", "diametral_clearance"}:  # the user chose the other raceway description
+            bearing.update({k: v for k, v in PRESETS[name].items()
+                            if k not in given and k not in ("inner_race_diameter", "outer_race_diameter")})
+        else:
+            bearing.update({k: v for k, v in PRESETS[name].items() if k not in given})
+    return data

@@ -1,0 +1,139 @@
+r"""The quasi-static solution of a bearing scenario: what ``bearing-mbs stiffness`` writes.
+
+A ``bearing`` scenario is turned into the inputs of :func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`:
+
+* **rollers**: :meth:`bearing_mbs.models.cylindrical_roller.geometry.BearingGeometry.roller_set` (Palmgren raceway laws, the same
+  clearance and roller mass as the dynamic model). When the scenario's raceway laws are not Palmgren's
+  (``stiffness_model = "given"`` or ``"document"``, or non-steel materials), the rollers get the scenario's
+  :math:`K, n` instead, and ``raceway_law`` in the summary says so.
+* **load**: ``[load] radial`` at ``[load] angle`` on the inner ring (for ``step`` and ``table`` profiles too:
+  use ``--set load.radial=...`` for another level), plus the inner ring's weight
+  :math:`m_i g` along −y when ``[scenario] gravity`` > 0 (:math:`m_i` includes ``supported_mass``). The
+  rollers' and the cage's weights are left out: the rollers pass theirs to the outer ring (at most
+  :math:`m_r g` ≈ 2 N per roller for the seed bearing) and a roller-guided cage hangs on the rollers.
+* **speed**: the drive's steady speed ``[drive] speed_rpm`` (the end of a ramp, the last entry of a table)
+  for the rollers' centrifugal force :math:`F_c = m_r (D_{pw}/2)\omega_c^2`; 0 gives none.
+* **roller phase**: roller 0 sits on the load line (``first_roller_angle`` = the load's direction), the
+  configuration of the largest roller load that a turning bearing passes through.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.spec import Spec, SpecError
+
+RPM = 2 * math.pi / 60
+SUMMARY_FILE = "summary.json"
+FIGURE_FILE = "load_distribution.png"
+
+
+def require_bearing(spec: Spec) -> None:
+    if spec.scenario.model != "bearing":
+        raise SpecError("scenario.model", spec.scenario.model, "the quasi-static solver needs model = 'bearing'")
+
+
+def shaft_speed(spec: Spec) -> float:
+    """The drive's steady inner-ring speed [rad/s] (see the module docstring)."""
+    drive = spec.drive
+    if drive.kind == "speed" and drive.profile == "table":
+        return drive.speeds_rpm[-1] * RPM
+    return drive.speed_rpm * RPM
+
+
+def ring_weight(spec: Spec) -> float:
+    """Weight of the inner ring and its supported mass [N], 0 without gravity."""
+    return spec.scenario.gravity * BearingGeometry.from_spec(spec.bearing).inner_ring_mass
+
+
+def quasi_static_load(spec: Spec, applied=None) -> np.ndarray:
+    """(F_x, F_y) [N] the rollers carry: the applied radial load (default ``[load]``) plus the ring's weight."""
+    if applied is None:
+        angle = math.radians(spec.load.angle)
+        applied = (spec.load.radial * math.cos(angle), spec.load.radial * math.sin(angle))
+    return np.asarray(applied, dtype=float) + np.array([0.0, -ring_weight(spec)])
+
+
+def quasi_static_rollers(spec: Spec, first_roller_angle: float = 0.0):
+    """The scenario's bearing as a :class:`bearing_mbs.models.cylindrical_roller.quasistatic.RollerSet`, and the raceway-law label
+    (``"palmgren"``, or ``"scenario"`` when the scenario's raceway laws replace Palmgren's)."""
+    from bearing_mbs.models.cylindrical_roller.build import group_law
+
+    require_bearing(spec)
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    rollers = replace(geometry.roller_set(), first_roller_angle=float(first_roller_angle))
+    laws = {side: group_law(spec, geometry, f"{side}_race") for side in ("inner", "outer")}
+    same = all(math.isclose(laws[side].stiffness, getattr(rollers, f"{side}_stiffness"), rel_tol=1e-12)
+               and laws[side].exponent == getattr(rollers, f"{side}_exponent") for side in laws)
+    if same:
+        return rollers, "palmgren"
+    return replace(rollers, inner_stiffness=laws["inner"].stiffness, inner_exponent=laws["inner"].exponent,
+                   outer_stiffness=laws["outer"].stiffness, outer_exponent=laws["outer"].exponent), "scenario"
+
+
+def solve_scenario(spec: Spec, applied=None, *, speed: float | None = None, first_roller_angle: float | None = None):
+    """:func:`~bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial` for the scenario: returns the solution and the law label.
+
+    ``applied``: (F_x, F_y) [N] instead of ``[load]``; ``speed`` [rad/s] instead of the drive's;
+    ``first_roller_angle`` [rad] instead of the load line.
+    """
+    from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
+
+    load = quasi_static_load(spec, applied)
+    if first_roller_angle is None:
+        first_roller_angle = math.atan2(load[1], load[0]) if np.any(load) else 0.0
+    rollers, law = quasi_static_rollers(spec, first_roller_angle)
+    return solve_radial(rollers, load, shaft_speed=shaft_speed(spec) if speed is None else speed), law
+
+
+def stiffness_summary(spec: Spec, solution, law: str) -> dict:
+    """summary.json of ``bearing-mbs stiffness``: SI units, angles in degrees from +x towards +y."""
+    angles = np.degrees(np.angle(np.exp(1j * solution.roller_angles)))
+    return {
+        "scenario": spec.scenario.name,
+        "model": "quasi-static planar (solve_radial)",
+        "raceway_law": law,
+        "inner_stiffness": solution.rollers.inner_stiffness,
+        "inner_exponent": solution.rollers.inner_exponent,
+        "outer_stiffness": solution.rollers.outer_stiffness,
+        "outer_exponent": solution.rollers.outer_exponent,
+        "diametral_clearance": solution.rollers.diametral_clearance,
+        "load": [float(v) for v in solution.load],
+        "applied_radial_load": spec.load.radial,
+        "applied_load_angle_deg": spec.load.angle,
+        "ring_weight": ring_weight(spec),
+        "shaft_speed_rpm": solution.shaft_speed / RPM,
+        "centrifugal_force": solution.centrifugal_force,
+        "first_roller_angle_deg": float(np.degrees(solution.rollers.first_roller_angle)),
+        "radial_displacement": float(np.hypot(*solution.displacement)),
+        "displacement": [float(v) for v in solution.displacement],
+        "roller_loads": [{"angle_deg": float(a), "load_N": float(q), "outer_load_N": float(qo)}
+                         for a, q, qo in zip(angles, solution.inner_loads, solution.outer_loads)],
+        "max_roller_load": solution.max_roller_load,
+        "loaded_zone_half_angle_deg": float(np.degrees(solution.loaded_zone_half_angle)),
+        "stiffness_matrix": [[float(v) for v in row] for row in solution.stiffness],
+        "iterations": solution.iterations,
+        "residual": solution.residual,
+    }
+
+
+def write_stiffness(spec: Spec, directory: str | Path, figures: bool = True) -> dict:
+    """Solve the scenario quasi-statically; write ``summary.json`` and ``load_distribution.png`` to ``directory``."""
+    from bearing_mbs.models.cylindrical_roller.quasistatic import plot_load_distribution
+    from bearing_mbs.runner import write_json
+
+    solution, law = solve_scenario(spec)
+    summary = stiffness_summary(spec, solution, law)
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    write_json(directory / SUMMARY_FILE, summary)
+    if figures:
+        speed = f", {summary['shaft_speed_rpm']:.4g} rpm" if solution.shaft_speed else ""
+        plot_load_distribution(solution, directory / FIGURE_FILE,
+                               title=f"{spec.scenario.name}: F = {np.hypot(*solution.load):.4g} N{speed}")
+    return summary

@@ -1,0 +1,66 @@
+"""What a model provides, and the registry that holds the models.
+
+A model turns a validated spec into a scene and its topology (``build``), and turns a result back into what
+engineers read (``metrics``, ``figures``). Optional parts (a quasi-static solver, a linearisation for the step
+advisor) are attributes of its package that the layers above look up when they need them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from bearing_mbs.core.result import Result
+from bearing_mbs.core.scene import Scene
+
+
+@dataclass(frozen=True)
+class Model:
+    """One model.
+
+    * ``name`` — the ``[scenario] model`` value that selects it;
+    * ``spec`` — its spec class: a frozen dataclass subclass of :class:`bearing_mbs.spec.Spec` that adds
+      ``contact`` (one :class:`~bearing_mbs.spec.ContactSpec` per contact group, with defaults) and the model's
+      sections; it validates itself on construction;
+    * ``build(spec) -> Scene`` — the scene, with its topology, and only what the case needs;
+    * ``metrics(spec, scene, result) -> dict`` — summary entries (JSON-safe numbers, lists and text);
+    * ``figures(spec, scene, result, directory) -> list[Path]`` — PNG files;
+    * ``prepare(data) -> data`` — fills model-specific defaults into the raw mapping before validation
+      (a preset, say); optional.
+    """
+
+    name: str
+    spec: type
+    build: Callable[[Any], Scene]
+    metrics: Callable[[Any, Scene, Result], dict]
+    figures: Callable[[Any, Scene, Result, Path], list]
+    prepare: Callable[[dict], dict] = field(default=lambda data: data)
+
+
+class ModelRegistry(Mapping):
+    """Models by name. :meth:`register` adds one from outside the package (a plug-in, or a test)."""
+
+    def __init__(self, models: Iterable[Model] = ()):
+        self._models: dict[str, Model] = {}
+        for model in models:
+            self.register(model)
+
+    def register(self, model: Model) -> Model:
+        if model.name in self._models and self._models[model.name] is not model:
+            raise ValueError(f"a model named {model.name!r} is already registered")
+        self._models[model.name] = model
+        return model
+
+    def unregister(self, name: str) -> None:
+        self._models.pop(name, None)
+
+    def __getitem__(self, name: str) -> Model:
+        return self._models[name]
+
+    def __iter__(self):
+        return iter(self._models)
+
+    def __len__(self) -> int:
+        return len(self._models)
