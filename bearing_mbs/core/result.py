@@ -14,6 +14,7 @@ import numpy as np
 
 from bearing_mbs.contact.kernel import PAIR_OUTPUTS
 from bearing_mbs.contact.state import EVENT_COLUMNS
+from bearing_mbs.core.failures import Failure
 
 SUCCESS, FAILED = "success", "failed"
 
@@ -41,7 +42,9 @@ class Result:
     constraint on its second body [N]; work (T, 2): cumulative work supplied by loads and drives and work
     dissipated by the contacts [J], integrated by the engine step by step; events (P, 4): first impact and
     separation of each pair. Sensors a scene does not list (:attr:`bearing_mbs.core.scene.Scene.sensors`) are left
-    empty. status is ``success`` or ``failed``; message says why a run stopped early.
+    empty. ``failure`` is the kind of an early stop (:class:`~bearing_mbs.core.failures.Failure`, ``NONE`` when the
+    run reached its end); ``status`` (``success`` or ``failed``) follows from it; ``message`` says why, in words made
+    from the kind and the state where the run stopped.
     """
 
     engine: str
@@ -57,14 +60,21 @@ class Result:
     body_names: tuple[str, ...]
     pair_names: tuple[str, ...]
     stats: Stats = field(default_factory=Stats)
-    status: str = SUCCESS
+    failure: Failure = Failure.NONE
     message: str = ""
     spec: dict | None = None
     metadata: dict = field(default_factory=dict)
 
+    def __post_init__(self):
+        self.failure = Failure(self.failure)
+
+    @property
+    def status(self) -> str:
+        return SUCCESS if self.failure == Failure.NONE else FAILED
+
     @property
     def success(self) -> bool:
-        return self.status == SUCCESS
+        return self.failure == Failure.NONE
 
     def body(self, name: str) -> int:
         return self.body_names.index(name)
@@ -86,6 +96,7 @@ class Result:
         path = Path(path)
         header = {f.name: getattr(self, f.name) for f in fields(self) if f.name not in self._ARRAYS}
         header["stats"] = asdict(self.stats)
+        header["failure"] = int(self.failure)
         temporary = path.with_name(path.name + ".part")
         with temporary.open("wb") as handle:
             np.savez_compressed(

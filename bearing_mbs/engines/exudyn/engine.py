@@ -26,7 +26,8 @@ import numpy as np
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS, scene_forces
 from bearing_mbs.contact.state import advance_pair_state, initial_pair_state
 from bearing_mbs.core.progress import ProgressMeter
-from bearing_mbs.core.result import FAILED, SUCCESS, Result, Stats
+from bearing_mbs.core.failures import Failure
+from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import DistanceConstraint, Scene
 from bearing_mbs.spec.fields import SpecError
 from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
@@ -141,7 +142,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     except Exception as error:  # Exudyn raises when a solver gives up
         solved = False
         if not monitor.message:
-            monitor.fail(_solver_failure(scene, settings, monitor.time, str(error)))
+            monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, settings, monitor.time, str(error)))
     finally:
         wall = time.perf_counter() - started
         progress.close()
@@ -157,7 +158,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         wall_time_s=wall,
     )
     if not solved and not monitor.message:
-        monitor.fail(_solver_failure(scene, settings, monitor.time, _last_line(exudyn_log)))
+        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, settings, monitor.time, _last_line(exudyn_log)))
     if monitor.message:
         monitor.record_final()
     out_t, out_q, out_v, out_pairs, out_work, out_constraints = monitor.outputs()
@@ -165,7 +166,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         engine="exudyn", method=settings.method, step=settings.step, time=out_t, position=out_q, velocity=out_v,
         pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events, body_names=tuple(b.name for b in scene.bodies),
         pair_names=tuple(p.name for p in scene.pairs), stats=stats,
-        status=FAILED if monitor.message else SUCCESS, message=monitor.message, spec=spec,
+        failure=monitor.failure, message=monitor.message, spec=spec,
         metadata={"connector": settings.connector, "exudyn_log": exudyn_log, "exudyn_version": exu.__version__},
     )
 
@@ -225,7 +226,7 @@ class _StepMonitor:
         self.output_times = output_grid(end_time, solver.output_interval)
         self.margin = 1e-3 * solver.exudyn.step
         self.rows: list[tuple] = []
-        self.message, self.time = "", 0.0
+        self.message, self.failure, self.time = "", Failure.NONE, 0.0
         self.q, self.v = reference.copy(), np.array([b.velocity for b in scene.bodies], dtype=float).ravel()
         self._forces = np.empty(reference.size)
         self._pairs = np.empty((len(latched), N_PAIR_OUTPUTS))
@@ -251,7 +252,8 @@ class _StepMonitor:
         speed = np.hypot(v[0::3], v[1::3])
         if not finite.all() or speed.max() > self.solver.speed_limit:
             coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
-            return self.fail(diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
+            kind = Failure.BLOWUP if finite.all() else Failure.NONFINITE
+            return self.fail(kind, diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
                                               step, blown_up=finite.all()))
         h = t - self.time
         self.q, self.v, self.time = q, v, t
@@ -260,7 +262,7 @@ class _StepMonitor:
         self._power = power
         _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
-            return self.fail(penetration_message(self.scene, self.solver, t, worst, q, v, step))
+            return self.fail(Failure.PENETRATION, penetration_message(self.scene, self.solver, t, worst, q, v, step))
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
             self._record(t)
         self._calls += 1
@@ -268,8 +270,9 @@ class _StepMonitor:
             self.progress.update(t)
         return True
 
-    def fail(self, message: str) -> bool:
-        self.message = self.message or message
+    def fail(self, failure: Failure, message: str) -> bool:
+        if self.failure == Failure.NONE:
+            self.failure, self.message = failure, message
         return False  # tells Exudyn to stop after this step
 
     def record_final(self):

@@ -10,7 +10,8 @@ import numpy as np
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS, scene_forces
 from bearing_mbs.contact.state import initial_pair_state, penetration_bounds
 from bearing_mbs.core.progress import ProgressMeter
-from bearing_mbs.core.result import FAILED, SUCCESS, Result, Stats
+from bearing_mbs.core.failures import Failure
+from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.spec.solver import SolverSpec
 from bearing_mbs.engines.reference import integrators as ig
@@ -98,7 +99,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
         engine="reference", method=settings.method, step=settings.step, time=out_t, position=out_q,
         velocity=out_v, pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events,
         body_names=tuple(b.name for b in scene.bodies), pair_names=tuple(p.name for p in scene.pairs),
-        stats=stats, status=SUCCESS if status == ig.RUNNING else FAILED, message=message, spec=spec,
+        stats=stats, failure=Failure(status), message=message, spec=spec,
     )
 
 
