@@ -7,22 +7,25 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearing_mbs.contact.normal import elastic_energy
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
+from bearing_mbs.elements import FORCE_ELEMENTS, pack_scene
 
 
 def energy(scene: Scene, result: Result) -> dict[str, np.ndarray]:
-    """Kinetic, gravitational and elastic (contact) energy [J] at the output instants, and their total."""
+    """Kinetic, gravitational and elastic energy [J] at the output instants, and their total. The elastic energy
+    is what the force elements store (the contact pairs' deformation, a spring's), each kind computing its own."""
     mass = np.array([[b.mass, b.mass, b.inertia] for b in scene.bodies]).ravel()
     kinetic = 0.5 * np.sum(mass * result.velocity**2, axis=1)
     gx, gy = scene.gravity
     masses = np.array([b.mass for b in scene.bodies])
     potential = -np.sum(masses * (gx * result.position[:, 0::3] + gy * result.position[:, 1::3]), axis=1)
-    gap = result.pair_series("gap")
-    stiffness = np.array([p.law.stiffness for p in scene.pairs])
-    exponent = np.array([p.law.exponent for p in scene.pairs])
-    elastic = np.sum(elastic_energy(gap, stiffness, exponent), axis=1) if scene.pairs else np.zeros_like(kinetic)
+    elastic = np.zeros_like(kinetic)
+    for parameters in pack_scene(scene).elements:
+        stored = FORCE_ELEMENTS.of_parameters(type(parameters)).potential_energy(
+            parameters, result.position, result.pair_output)
+        if stored is not None:
+            elastic = elastic + stored
     return {"kinetic": kinetic, "potential": potential, "elastic": elastic, "total": kinetic + potential + elastic}
 
 

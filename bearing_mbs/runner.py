@@ -16,6 +16,7 @@ from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.spec import Spec, to_mapping
+from bearing_mbs.elements import scene_counts
 
 log = logging.getLogger(__name__)
 
@@ -47,7 +48,7 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
         "rejected_steps": result.stats.rejected_steps,
         "force_evaluations": result.stats.force_evaluations,
         "newton_iterations": result.stats.newton_iterations,
-        "scene": scene.counts(),
+        "scene": scene_counts(scene),
     }
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")

@@ -18,6 +18,7 @@ from cases import seed_spec
 from bearing_mbs.contact import kernel, twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate
+from bearing_mbs.elements import pack_scene, scene_forces, scene_forces_twin
 
 END_TIME, STEP = 0.02, 1e-6  # the first ball–floor contacts fall inside the window
 
@@ -30,14 +31,14 @@ def main() -> dict:
     friction = ["contact.wall.friction_law=erf", "contact.ball.friction_law=erf"]
     spec = seed_spec(4, friction + [f"scenario.end_time={END_TIME}"])
     scene = build_scene(spec)
-    packed = scene.pack()
+    packed = pack_scene(scene)
     q, v = scene.initial_state()
     q[1] = 0.0049  # ball 1 touching the floor: one active contact
     latched = np.zeros(len(scene.pairs))
     forces, pair_out = np.empty(q.size), np.empty((len(scene.pairs), N_PAIR_OUTPUTS))
     figures = {
-        "kernel": per_call(lambda: kernel.scene_forces(packed, 0.0, q, v, latched, forces, pair_out), 20000),
-        "numpy_twin": per_call(lambda: twin.scene_forces(packed, 0.0, q, v, latched, forces, pair_out), 2000),
+        "kernel": per_call(lambda: scene_forces(packed, 0.0, q, v, latched, forces, pair_out), 20000),
+        "numpy_twin": per_call(lambda: scene_forces_twin(packed, 0.0, q, v, latched, forces, pair_out), 2000),
     }
     runs = {f"exudyn_{c}": ["solver.engine=exudyn", "solver.exudyn.method=rk44", f"solver.exudyn.step={STEP}",
                             f"solver.exudyn.connector={c}"] for c in ("compiled", "python")}

@@ -24,6 +24,7 @@ from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.spec import SpecError
 from bearing_mbs.models import load_spec, spec_from_mapping
 from bearing_mbs.models.cylindrical_roller.spec import GearTrainSpec
+from bearing_mbs.elements import Load, VelocityServo, pack_scene, scene_counts
 
 STEADY = SCENARIOS / "seed_hss_steady.toml"
 Z = 15
@@ -55,7 +56,7 @@ ROLLER_GUIDED = "bearing.cage_guidance=rollers"
     ],
 )
 def test_each_scene_builds_only_what_it_needs(overrides, counts):
-    assert scene_of(*overrides).counts() == counts
+    assert scene_counts(scene_of(*overrides)) == counts
 
 
 def test_full_complement_has_no_cage_and_neighbour_pairs_only():
@@ -68,8 +69,8 @@ def test_full_complement_has_no_cage_and_neighbour_pairs_only():
 
 def test_gear_train_scene_has_train_loads_and_no_servo():
     scene = scene_of(path=SCENARIOS / "seed_hss_gear_driven.toml")
-    assert [l.name for l in scene.loads] == ["drive_torque", "mesh_load_x", "mesh_load_y"]
-    assert scene.drives == ()
+    assert [l.name for l in scene.items_of(Load)] == ["drive_torque", "mesh_load_x", "mesh_load_y"]
+    assert scene.items_of(VelocityServo) == ()
 
 
 def test_initial_rolling_state_is_epicyclic_with_zero_slip():
@@ -80,7 +81,7 @@ def test_initial_rolling_state_is_epicyclic_with_zero_slip():
     q, v = scene.initial_state()
     omega_i = 1500 * 2 * math.pi / 60
     assert v[5] == pytest.approx(omega_i * (1 - geometry.roller_diameter / geometry.pitch_diameter) / 2)
-    _, _, slip, *_ = twin.pair_geometry(scene.pack().pairs, q, v)
+    _, _, slip, *_ = twin.pair_geometry(pack_scene(scene).pairs, q, v)
     races = [k for k, p in enumerate(scene.pairs) if p.name.endswith("_race")]
     assert np.max(np.abs(slip[races])) < 1e-12 * omega_i * geometry.pitch_diameter
 
@@ -149,7 +150,7 @@ def test_land_guidance_needs_a_land_clearance():
 def test_preload_within_bound_overlaps_only_the_raceways():
     scene = scene_of("bearing.inner_race_diameter=0.21004")  # 40 µm diametral interference
     q, v = scene.initial_state()
-    gaps = twin.pair_geometry(scene.pack().pairs, q, v)[0]
+    gaps = twin.pair_geometry(pack_scene(scene).pairs, q, v)[0]
     raceways = np.array([p.name.endswith("_race") for p in scene.pairs])
     assert np.all(gaps[raceways] < 0) and np.all(gaps[~raceways] > 0)
 
@@ -172,7 +173,7 @@ def test_gear_train_acceleration_solves_equations_41_and_42():
 def test_constraint_jacobian_and_gamma_match_finite_differences():
     rng = np.random.default_rng(7)
     scene = scene_of("cage.model=constraint")
-    constraints = scene.pack().constraints
+    constraints = pack_scene(scene).constraints
     q, v = scene.initial_state()
     q = q + rng.normal(scale=1e-3, size=q.size)
     v = v + rng.normal(scale=0.5, size=v.size)

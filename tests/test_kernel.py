@@ -13,13 +13,11 @@ from bearing_mbs.core.scene import (
     GROUND,
     Body,
     ContactPair,
-    Drag,
-    Load,
     PairLaw,
     Profile,
     Scene,
-    VelocityServo,
 )
+from bearing_mbs.elements import Drag, Load, VelocityServo, pack_scene, scene_forces, scene_forces_twin
 
 
 def random_scene(rng, n_bodies=4, n_pairs=40):
@@ -63,7 +61,7 @@ def random_scene(rng, n_bodies=4, n_pairs=40):
     loads = (Load("f", 0, (1.0, -2.0, 0.3), Profile((0.0, 1.0), (0.0, 2.0))),)
     drives = (VelocityServo("servo", 1, 5.0, Profile((0.0, 0.5), (0.0, 100.0))),)
     drags = (Drag("drag", 2, 0.3, 1e-3),)
-    return Scene("random", bodies, tuple(pairs), loads=loads, drives=drives, drags=drags)
+    return Scene("random", bodies, tuple(pairs), forces=(*loads, *drives, *drags))
 
 
 def random_state(rng, scene, spread=0.1):
@@ -74,23 +72,23 @@ def random_state(rng, scene, spread=0.1):
     return q, v, latched
 
 
-def evaluate(module, packed, t, q, v, latched):
+def evaluate(scene_forces_of, packed, t, q, v, latched):
     forces = np.empty(q.size)
     pair_out = np.empty((packed.pairs.kind.size, kernel.N_PAIR_OUTPUTS))
-    module.scene_forces(packed, t, q, v, latched, forces, pair_out)
+    scene_forces_of(packed, t, q, v, latched, forces, pair_out)
     return forces, pair_out
 
 
 def test_kernel_matches_numpy_twin_on_random_states():
     rng = np.random.default_rng(1)
     scene = random_scene(rng)
-    packed = scene.pack()
+    packed = pack_scene(scene)
     in_contact = 0
     for trial in range(50):
         q, v, latched = random_state(rng, scene)
         t = rng.uniform(0, 1)
-        f_kernel, p_kernel = evaluate(kernel, packed, t, q, v, latched)
-        f_twin, p_twin = evaluate(twin, packed, t, q, v, latched)
+        f_kernel, p_kernel = evaluate(scene_forces, packed, t, q, v, latched)
+        f_twin, p_twin = evaluate(scene_forces_twin, packed, t, q, v, latched)
         np.testing.assert_allclose(f_kernel, f_twin, rtol=1e-12, atol=1e-12 * np.abs(f_twin).max())
         scale = np.abs(p_twin).max(axis=0) + 1e-300
         np.testing.assert_allclose(p_kernel / scale, p_twin / scale, rtol=0, atol=1e-12)
@@ -103,13 +101,13 @@ def test_incomplete_evaluation_gives_the_same_forces_and_power():
     the outputs of pairs in contact must not change (exactly)."""
     rng = np.random.default_rng(6)
     scene = random_scene(rng)
-    packed = scene.pack()
+    packed = pack_scene(scene)
     for _ in range(20):
         q, v, latched = random_state(rng, scene)
         full, partial = np.empty(q.size), np.empty(q.size)
         pairs_full, pairs_partial = (np.empty((len(scene.pairs), kernel.N_PAIR_OUTPUTS)) for _ in range(2))
-        power_full = kernel.scene_forces(packed, 0.3, q, v, latched, full, pairs_full, True)
-        power_partial = kernel.scene_forces(packed, 0.3, q, v, latched, partial, pairs_partial, False)
+        power_full = scene_forces(packed, 0.3, q, v, latched, full, pairs_full, True)
+        power_partial = scene_forces(packed, 0.3, q, v, latched, partial, pairs_partial, False)
         assert power_full == power_partial
         np.testing.assert_array_equal(full, partial)
         touching = pairs_full[:, 0] < 0
@@ -119,7 +117,7 @@ def test_incomplete_evaluation_gives_the_same_forces_and_power():
 def test_gap_rate_is_the_time_derivative_of_the_gap():
     rng = np.random.default_rng(2)
     scene = random_scene(rng)
-    pairs = scene.pack().pairs
+    pairs = pack_scene(scene).pairs
     q, v, _ = random_state(rng, scene)
     eps = 1e-6
     gap_plus = twin.pair_geometry(pairs, q + eps * v, v)[0]
@@ -135,7 +133,7 @@ def test_contact_forces_balance_between_bodies():
     internal = tuple(p for p in scene.pairs if p.body_a != GROUND)
     scene = Scene("internal", scene.bodies, internal)
     q, v, latched = random_state(rng, scene)
-    forces, pair_out = evaluate(kernel, scene.pack(), 0.0, q, v, latched)
+    forces, pair_out = evaluate(scene_forces, pack_scene(scene), 0.0, q, v, latched)
     f = forces.reshape(-1, 3)
     qb = q.reshape(-1, 3)
     assert np.sum(pair_out[:, 3] > 0) > 5
@@ -149,10 +147,10 @@ def test_contact_power_loss_is_never_negative():
     """Dissipation of damping, friction and rolling resistance is ≥ 0 for every pair and state."""
     rng = np.random.default_rng(4)
     scene = random_scene(rng)
-    packed = scene.pack()
+    packed = pack_scene(scene)
     for _ in range(20):
         q, v, latched = random_state(rng, scene)
-        _, pair_out = evaluate(kernel, packed, 0.0, q, v, latched)
+        _, pair_out = evaluate(scene_forces, packed, 0.0, q, v, latched)
         assert np.all(pair_out[:, 6] >= -1e-12 * np.abs(pair_out[:, 6]).max())
 
 
@@ -162,7 +160,7 @@ def test_separated_pairs_exert_no_force(kind):
     bodies = (Body("a", 1.0, 1.0, (0.0, 0.0, 0.0)), Body("b", 1.0, 1.0, (0.0, 0.5, 0.0)))
     radius_a = {"circle_in_circle": 1.0, "circle_point": 0.0}.get(kind, 0.1)
     pair = ContactPair("p", kind, 0, 1, law, radius_b=0.1, radius_a=radius_a)
-    forces, pair_out = evaluate(kernel, Scene("s", bodies, (pair,)).pack(), 0.0, *Scene("s", bodies).initial_state(), np.zeros(1))
+    forces, pair_out = evaluate(scene_forces, pack_scene(Scene("s", bodies, (pair,))), 0.0, *Scene("s", bodies).initial_state(), np.zeros(1))
     assert pair_out[0, 0] > 0
     assert np.all(forces == 0.0)
 
@@ -171,7 +169,7 @@ def test_rolling_speed_is_relative_to_the_moving_contact_point():
     """u = t·(v_a(p) + v_b(p))/2 − t·ṗ, with ṗ from central differences of p = c_b − r_b n (1e-6 relative)."""
     rng = np.random.default_rng(5)
     scene = random_scene(rng)
-    pairs = scene.pack().pairs
+    pairs = pack_scene(scene).pairs
     q, v, _ = random_state(rng, scene)
     eps = 1e-7
     _, _, _, nx, ny, cx, cy, _, rolling = twin.pair_geometry(pairs, q, v)
@@ -200,6 +198,6 @@ def test_pure_rolling_inside_a_fixed_ring_has_zero_slip_and_the_orbital_rolling_
     body = Body("roller", 0.2, 1e-5, (centre, 0.0, 0.0), (0.0, orbit * centre, spin))
     pair = ContactPair("p", "circle_in_circle", GROUND, 0, law, radius_b=roller, radius_a=ring)
     scene = Scene("s", (body,), (pair,))
-    _, pair_out = evaluate(kernel, scene.pack(), 0.0, *scene.initial_state(), np.zeros(1))
+    _, pair_out = evaluate(scene_forces, pack_scene(scene), 0.0, *scene.initial_state(), np.zeros(1))
     assert abs(pair_out[0, 2]) < 1e-12
     assert abs(pair_out[0, 7]) == pytest.approx(orbit * ring, rel=1e-12)

@@ -20,6 +20,7 @@ from bearing_mbs.contact import twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate
 from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
+from bearing_mbs.elements import pack_scene, scene_forces_twin
 
 END_TIME = 0.05
 
@@ -51,13 +52,13 @@ def test_case1_free_fall_matches_the_closed_form(engine, method, step):
 @pytest.fixture(scope="module")
 def smooth_reference():
     scene = ball_in_ring_scene()
-    packed = scene.pack()
+    packed = pack_scene(scene)
     q0, v0 = scene.initial_state()
     n = q0.size
 
     def rhs(t, y):
         forces, pair_out = np.empty(n), np.empty((1, N_PAIR_OUTPUTS))
-        twin.scene_forces(packed, t, y[:n], y[n:], np.zeros(1), forces, pair_out)
+        scene_forces_twin(packed, t, y[:n], y[n:], np.zeros(1), forces, pair_out)
         return np.concatenate([y[n:], packed.inverse_mass * forces + packed.gravity])
 
     solution = solve_ivp(rhs, (0, END_TIME), np.concatenate([q0, v0]), method="DOP853", rtol=1e-13, atol=1e-16)

@@ -64,7 +64,7 @@ from typing import NamedTuple
 import numpy as np
 from numba.extending import register_jitable
 
-from bearing_mbs.contact.normal import elastic_force
+from bearing_mbs.contact.normal import elastic_energy, elastic_force
 
 #: Palmgren's exponent n = 10/9 of the line-contact law Q = K δⁿ [-].
 PALMGREN_EXPONENT = 10.0 / 9.0
@@ -123,7 +123,7 @@ def power_law_stiffness(approach, stiffness, exponent):
 @register_jitable
 def power_law_energy(approach, stiffness, exponent):
     r"""Stored energy :math:`K\max(\delta,0)^{n+1}/(n+1)` [J], whose derivative is :func:`power_law_force`."""
-    return stiffness * np.maximum(approach, 0.0) ** (exponent + 1.0) / (exponent + 1.0)
+    return elastic_energy(-approach, stiffness, exponent)
 
 
 @register_jitable
@@ -187,7 +187,7 @@ def sliced_contact(approach, tilt, positions, drops, width, coefficient, exponen
     compressed = np.maximum(interference, 0.0)
     slice_forces = coefficient * width * compressed**exponent
     slice_stiffness = (interference > 0.0) * exponent * coefficient * width * compressed ** (exponent - 1.0)
-    energy = coefficient * width * compressed ** (exponent + 1.0) / (exponent + 1.0)
+    energy = power_law_energy(interference, coefficient * width, exponent)
     return SlicedContact(
         force=slice_forces.sum(axis=-1),
         moment=(slice_forces * positions).sum(axis=-1),
@@ -211,5 +211,10 @@ def effective_modulus(youngs_1, poisson_1, youngs_2, poisson_2):
     return 1.0 / ((1.0 - poisson_1**2) / youngs_1 + (1.0 - poisson_2**2) / youngs_2)
 
 
-#: :math:`E^*` of bearing steel on bearing steel (E = 208 GPa, ν = 0.3), the reference of Palmgren's fit.
-STEEL_EFFECTIVE_MODULUS = effective_modulus(208e9, 0.3, 208e9, 0.3)
+#: Young's modulus [Pa] of bearing steel (100Cr6), the material of Palmgren's fit.
+STEEL_YOUNGS_MODULUS = 208e9
+#: Poisson's ratio [-] of bearing steel.
+STEEL_POISSON_RATIO = 0.3
+#: :math:`E^*` [Pa] of bearing steel on bearing steel, the reference of Palmgren's fit.
+STEEL_EFFECTIVE_MODULUS = effective_modulus(STEEL_YOUNGS_MODULUS, STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS,
+                                            STEEL_POISSON_RATIO)

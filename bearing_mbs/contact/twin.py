@@ -1,16 +1,13 @@
-"""Readable numpy twin of :mod:`.kernel`: the same laws and kinematics, vectorised over pairs.
-
-It calls the functions of :mod:`.kinematics`, :mod:`.normal` and :mod:`.friction` on whole arrays and
-assembles with ``np.add.at``. It is the ``python`` connector of the Exudyn engine and the reference the
-tests hold the compiled kernel to (1e-12 relative).
+"""Readable numpy twin of :mod:`.kernel`: the same pair kinematics and friction-law dispatch, vectorised over
+pairs (the functions of :mod:`.kinematics` and :mod:`.friction` on whole arrays). The contact-pair force
+element's numpy twin uses it; the tests hold it to the compiled kernel (1e-12 relative).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from bearing_mbs.contact import friction, kinematics, normal
-from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
+from bearing_mbs.contact import friction, kinematics
 
 
 def _body_columns(q, index):
@@ -63,54 +60,3 @@ def regularised_sign(law, speed, regularisation_speed):
         mask = law == code
         sign[mask] = friction.FRICTION_SIGN[name](speed[mask], regularisation_speed[mask])
     return sign
-
-
-def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
-    """Same contract as :func:`bearing_mbs.contact.kernel.scene_forces`; always complete (``complete`` is
-    accepted for the same call signature)."""
-    pairs = packed.pairs
-    gap, gap_rate, slip, nx, ny, cx, cy, spin, rolling = pair_geometry(pairs, q, v)
-    approach = normal.reference_approach_speed(latched, gap_rate, pairs.approach_speed_floor)
-    fn = normal.hysteresis_force(gap, gap_rate, pairs.stiffness, pairs.exponent, pairs.damping_factor, approach)
-    ft = friction.friction_force(
-        fn, pairs.friction_coefficient, regularised_sign(pairs.friction_law, slip, pairs.regularisation_speed)
-    )
-    spin_sign = regularised_sign(pairs.friction_law, spin * pairs.radius_b, pairs.regularisation_speed)
-    moment = friction.rolling_resistance_moment(fn, pairs.rolling_resistance_arm, spin_sign)
-    damping = fn - normal.elastic_force(gap, pairs.stiffness, pairs.exponent)
-    loss = -damping * gap_rate - ft * slip - moment * spin
-
-    fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
-    qb = q.reshape(-1, 3)
-    a, b = pairs.body_a, pairs.body_b
-    torque_b = (cx - qb[b, 0]) * fy - (cy - qb[b, 1]) * fx + moment
-    body_forces = np.zeros((q.size // 3, 3))
-    np.add.at(body_forces, b, np.column_stack([fx, fy, torque_b]))
-    on_a = a >= 0
-    ai = a[on_a]
-    torque_a = (cx[on_a] - qb[ai, 0]) * fy[on_a] - (cy[on_a] - qb[ai, 1]) * fx[on_a] + moment[on_a]
-    np.add.at(body_forces, ai, -np.column_stack([fx[on_a], fy[on_a], torque_a]))
-
-    supplied = 0.0
-    velocities = v.reshape(-1, 3)
-    for j, body in enumerate(packed.load_body):
-        start, count = packed.load_profile[j]
-        scale = np.interp(t, packed.profile_times[start : start + count], packed.profile_values[start : start + count])
-        body_forces[body] += scale * packed.load_vector[j]
-        supplied += scale * packed.load_vector[j] @ velocities[body]
-    for j, body in enumerate(packed.drive_body):
-        start, count = packed.drive_profile[j]
-        speed = np.interp(t, packed.profile_times[start : start + count], packed.profile_values[start : start + count])
-        torque = packed.drive_gain[j] * (speed - velocities[body, 2])
-        body_forces[body, 2] += torque
-        supplied += torque * velocities[body, 2]
-
-    dissipated = loss.sum()
-    for j, body in enumerate(packed.drag_body):
-        coefficients = np.array([packed.drag_linear[j], packed.drag_linear[j], packed.drag_angular[j]])
-        body_forces[body] -= coefficients * velocities[body]
-        dissipated += coefficients @ velocities[body] ** 2
-
-    forces[:] = body_forces.ravel()
-    pair_out[:, :N_PAIR_OUTPUTS] = np.column_stack([gap, gap_rate, slip, fn, ft, moment, loss, rolling])
-    return supplied, dissipated

@@ -15,6 +15,7 @@ import numpy as np
 from bearing_mbs.contact.kernel import PAIR_OUTPUTS
 from bearing_mbs.contact.state import EVENT_COLUMNS
 from bearing_mbs.core.failures import Failure
+from bearing_mbs.core.topology import Topology
 
 SUCCESS, FAILED = "success", "failed"
 
@@ -44,7 +45,7 @@ class Result:
     separation of each pair. Sensors a scene does not list (:attr:`bearing_mbs.core.scene.Scene.sensors`) are left
     empty. ``failure`` is the kind of an early stop (:class:`~bearing_mbs.core.failures.Failure`, ``NONE`` when the
     run reached its end); ``status`` (``success`` or ``failed``) follows from it; ``message`` says why, in words made
-    from the kind and the state where the run stopped.
+    from the kind and the state where the run stopped. ``topology`` is the scene's: which body and pair is which.
     """
 
     engine: str
@@ -62,6 +63,7 @@ class Result:
     stats: Stats = field(default_factory=Stats)
     failure: Failure = Failure.NONE
     message: str = ""
+    topology: Topology = field(default_factory=Topology)
     spec: dict | None = None
     metadata: dict = field(default_factory=dict)
 
@@ -97,6 +99,7 @@ class Result:
         header = {f.name: getattr(self, f.name) for f in fields(self) if f.name not in self._ARRAYS}
         header["stats"] = asdict(self.stats)
         header["failure"] = int(self.failure)
+        header["topology"] = self.topology.to_dict()
         temporary = path.with_name(path.name + ".part")
         with temporary.open("wb") as handle:
             np.savez_compressed(
@@ -113,4 +116,5 @@ class Result:
         header["stats"] = Stats(**header["stats"])
         header["body_names"] = tuple(header["body_names"])
         header["pair_names"] = tuple(header["pair_names"])
+        header["topology"] = Topology.from_dict(header.get("topology", {}))
         return cls(**header, **arrays)

@@ -1,9 +1,10 @@
 """Engine-neutral scene: what gets simulated.
 
-A scene is a flat list of planar rigid bodies, contact pairs, constraints, loads and drives, in SI units.
-Builders (:mod:`bearing_mbs.builders`) turn a validated spec into a scene and include only what the case
-needs; both engines consume the same scene. :meth:`Scene.pack` turns it into the arrays that the compiled
-kernel, its numpy twin and the reference integrators read.
+A scene is a flat list of planar rigid bodies, contact pairs, constraints and force elements (loads, drives,
+drags, or any registered kind: :mod:`bearing_mbs.core.force_element`), in SI units, with its topology (which
+body and pair is which, :mod:`bearing_mbs.core.topology`). A model's ``build`` turns a validated spec into a
+scene and includes only what the case needs; both engines consume the same scene.
+:func:`bearing_mbs.elements.pack_scene` turns it into the arrays that compiled code reads.
 
 Coordinates: each body has q = (x [m], y [m], θ [rad]) of its centre of mass in the world frame, and
 velocities (vx, vy [m/s], ω [rad/s]). Body index −1 in a pair or constraint means the ground (world frame).
@@ -12,12 +13,10 @@ velocities (vx, vy [m/s], ω [rad/s]). Body index −1 in a pair or constraint m
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import NamedTuple
-
 import numpy as np
 
-from bearing_mbs.contact.friction import FRICTION_LAWS
 from bearing_mbs.contact.kinematics import PAIR_KINDS
+from bearing_mbs.core.topology import Topology
 
 GROUND = -1
 
@@ -145,37 +144,6 @@ class Profile:
 
 
 @dataclass(frozen=True)
-class Load:
-    """A world-frame force/torque ``vector`` (Fx [N], Fy [N], Mz [N m]) on a body, scaled by ``profile(t)``."""
-
-    name: str
-    body: int
-    vector: tuple[float, float, float]
-    profile: Profile = field(default_factory=lambda: Profile.constant(1.0))
-
-
-@dataclass(frozen=True)
-class VelocityServo:
-    """Drive torque ``gain * (speed(t) - ω)`` [N m] on a body: works with explicit and implicit solvers."""
-
-    name: str
-    body: int
-    gain: float
-    speed: Profile
-
-
-@dataclass(frozen=True)
-class Drag:
-    """Viscous drag on a body: force −linear·v [N] on its centre and torque −angular·ω [N m]; linear
-    [N s/m] >= 0, angular [N m s/rad] >= 0 (e.g. the lubricant's drag on a roller)."""
-
-    name: str
-    body: int
-    linear: float
-    angular: float = 0.0
-
-
-@dataclass(frozen=True)
 class Scene:
     """Everything an engine needs, and nothing more. ``gravity`` is the acceleration (gx, gy) [m/s²]."""
 
@@ -183,19 +151,24 @@ class Scene:
     bodies: tuple[Body, ...]
     pairs: tuple[ContactPair, ...] = ()
     constraints: tuple[DistanceConstraint | PointOnLineConstraint, ...] = ()
-    loads: tuple[Load, ...] = ()
-    drives: tuple[VelocityServo, ...] = ()
-    drags: tuple[Drag, ...] = ()
+    forces: tuple = ()
     gravity: tuple[float, float] = (0.0, 0.0)
+    topology: Topology = field(default_factory=Topology)
 
     def __post_init__(self):
         n = len(self.bodies)
         for item in (*self.pairs, *self.constraints):
             if max(item.body_a, item.body_b) >= n:
                 raise ValueError(f"{item.name!r} refers to a body index >= {n}")
-        for item in (*self.loads, *self.drives, *self.drags):
-            if not 0 <= item.body < n:
-                raise ValueError(f"{item.name!r} refers to body {item.body}, not in 0..{n - 1}")
+        for item in self.forces:
+            for body in (getattr(item, key) for key in ("body", "body_a", "body_b") if hasattr(item, key)):
+                if not GROUND <= body < n or (body == GROUND and hasattr(item, "body")):
+                    raise ValueError(f"{item.name!r} refers to body {body}, not in 0..{n - 1}")
+        self.topology.check(len(self.bodies), len(self.pairs))
+
+    def items_of(self, kind: type) -> tuple:
+        """The force elements of one kind (e.g. ``scene.items_of(Drag)``)."""
+        return tuple(item for item in self.forces if isinstance(item, kind))
 
     @property
     def coordinate_count(self) -> int:
@@ -210,148 +183,12 @@ class Scene:
             "bodies": True,
             "pairs": bool(self.pairs),
             "constraints": bool(self.constraints),
-            "energy": bool(self.pairs or self.loads or self.drives or self.drags),
+            "energy": bool(self.pairs or self.forces),
         }
         return tuple(name for name in SENSORS if wanted[name])
-
-    def counts(self) -> dict:
-        """Item counts, for the 'only what is needed' tests and for reports."""
-        return {
-            "bodies": len(self.bodies),
-            "pairs": len(self.pairs),
-            "constraints": len(self.constraints),
-            "loads": len(self.loads) + (1 if any(self.gravity) else 0),
-            "drives": len(self.drives),
-            "drags": len(self.drags),
-            "sensors": len(self.sensors),
-        }
 
     def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
         """Flat (q, v) at t = 0, each of length 3 × bodies."""
         q = np.array([b.position for b in self.bodies], dtype=float).ravel()
         v = np.array([b.velocity for b in self.bodies], dtype=float).ravel()
         return q, v
-
-    def pack(self) -> PackedScene:
-        return pack_scene(self)
-
-
-class PairArrays(NamedTuple):
-    """Contact pairs as arrays (one entry per pair), read by the kernel and its numpy twin."""
-
-    kind: np.ndarray  # int64, index into PAIR_KINDS
-    body_a: np.ndarray  # int64, −1 = ground
-    body_b: np.ndarray  # int64
-    anchor: np.ndarray  # (P, 2) [m]
-    direction: np.ndarray  # (P, 2)
-    radius_a: np.ndarray  # [m]
-    radius_b: np.ndarray  # [m]
-    stiffness: np.ndarray  # [N/m^n]
-    exponent: np.ndarray  # [-]
-    damping_factor: np.ndarray  # [-]
-    approach_speed_floor: np.ndarray  # [m/s]
-    friction_law: np.ndarray  # int64, index into FRICTION_LAWS
-    friction_coefficient: np.ndarray  # [-]
-    regularisation_speed: np.ndarray  # [m/s]
-    rolling_resistance_arm: np.ndarray  # [m]
-
-
-class ConstraintArrays(NamedTuple):
-    """Constraints as arrays (unused columns of a kind are zero)."""
-
-    kind: np.ndarray  # int64, index into CONSTRAINT_KINDS
-    body_a: np.ndarray  # int64
-    body_b: np.ndarray  # int64
-    length: np.ndarray  # [m], distance constraints
-    anchor: np.ndarray  # (C, 2) [m], point-on-line constraints, in a's frame
-    direction: np.ndarray  # (C, 2), point-on-line constraints, unit, in a's frame
-
-
-class PackedScene(NamedTuple):
-    """A scene as flat arrays. Coordinates are ordered body by body: (x, y, θ) of body 0, then body 1, …"""
-
-    inverse_mass: np.ndarray  # (3N,) 1/m, 1/m, 1/I; 0 on fixed coordinates
-    gravity: np.ndarray  # (3N,) gravitational acceleration on free translational coordinates
-    pairs: PairArrays
-    constraints: ConstraintArrays
-    load_body: np.ndarray  # (L,) int64
-    load_vector: np.ndarray  # (L, 3)
-    load_profile: np.ndarray  # (L, 2) int64: start and length in the profile tables
-    drive_body: np.ndarray  # (D,) int64
-    drive_gain: np.ndarray  # (D,) [N m s/rad]
-    drive_profile: np.ndarray  # (D, 2) int64
-    drag_body: np.ndarray  # (G,) int64
-    drag_linear: np.ndarray  # (G,) [N s/m]
-    drag_angular: np.ndarray  # (G,) [N m s/rad]
-    profile_times: np.ndarray  # flat table of all profiles' times [s]
-    profile_values: np.ndarray  # flat table of all profiles' values
-
-
-def _pack_pairs(pairs) -> PairArrays:
-    def column(get, dtype=float):
-        return np.array([get(p) for p in pairs], dtype=dtype)
-
-    return PairArrays(
-        kind=column(lambda p: PAIR_KINDS.index(p.kind), np.int64),
-        body_a=column(lambda p: p.body_a, np.int64),
-        body_b=column(lambda p: p.body_b, np.int64),
-        anchor=column(lambda p: p.anchor).reshape(-1, 2),
-        direction=column(lambda p: p.direction).reshape(-1, 2),
-        radius_a=column(lambda p: p.radius_a),
-        radius_b=column(lambda p: p.radius_b),
-        stiffness=column(lambda p: p.law.stiffness),
-        exponent=column(lambda p: p.law.exponent),
-        damping_factor=column(lambda p: p.law.damping_factor),
-        approach_speed_floor=column(lambda p: p.law.approach_speed_floor),
-        friction_law=column(lambda p: FRICTION_LAWS.index(p.law.friction_law), np.int64),
-        friction_coefficient=column(lambda p: p.law.friction_coefficient),
-        regularisation_speed=column(lambda p: p.law.regularisation_speed),
-        rolling_resistance_arm=column(lambda p: p.law.rolling_resistance_arm),
-    )
-
-
-def _pack_constraints(constraints) -> ConstraintArrays:
-    def column(get, dtype=float):
-        return np.array([get(c) for c in constraints], dtype=dtype)
-
-    return ConstraintArrays(
-        kind=column(lambda c: CONSTRAINT_KINDS.index(type(c)), np.int64),
-        body_a=column(lambda c: c.body_a, np.int64),
-        body_b=column(lambda c: c.body_b, np.int64),
-        length=column(lambda c: getattr(c, "length", 0.0)),
-        anchor=column(lambda c: getattr(c, "anchor", (0.0, 0.0))).reshape(-1, 2),
-        direction=column(lambda c: getattr(c, "direction", (0.0, 0.0))).reshape(-1, 2),
-    )
-
-
-def pack_scene(scene: Scene) -> PackedScene:
-    free = np.array([b.free for b in scene.bodies], dtype=bool).ravel()
-    inverse_mass = np.array([[1 / b.mass, 1 / b.mass, 1 / b.inertia] for b in scene.bodies]).ravel() * free
-    gravity = np.zeros(scene.coordinate_count)
-    gravity[0::3], gravity[1::3] = scene.gravity
-    gravity *= free
-
-    profiles, index = [], []
-    for profile in [item.profile for item in scene.loads] + [item.speed for item in scene.drives]:
-        index.append((sum(len(p.times) for p in profiles), len(profile.times)))
-        profiles.append(profile)
-    index = np.array(index, dtype=np.int64).reshape(-1, 2)
-    n_loads = len(scene.loads)
-
-    return PackedScene(
-        inverse_mass=inverse_mass,
-        gravity=gravity,
-        pairs=_pack_pairs(scene.pairs),
-        constraints=_pack_constraints(scene.constraints),
-        load_body=np.array([item.body for item in scene.loads], dtype=np.int64),
-        load_vector=np.array([item.vector for item in scene.loads], dtype=float).reshape(-1, 3),
-        load_profile=index[:n_loads],
-        drive_body=np.array([item.body for item in scene.drives], dtype=np.int64),
-        drive_gain=np.array([item.gain for item in scene.drives], dtype=float),
-        drive_profile=index[n_loads:],
-        drag_body=np.array([d.body for d in scene.drags], dtype=np.int64),
-        drag_linear=np.array([d.linear for d in scene.drags], dtype=float),
-        drag_angular=np.array([d.angular for d in scene.drags], dtype=float),
-        profile_times=np.array([t for p in profiles for t in p.times], dtype=float),
-        profile_values=np.array([v for p in profiles for v in p.values], dtype=float),
-    )

@@ -1,8 +1,8 @@
 """The three ways contact forces reach Exudyn (``[solver.exudyn] connector``).
 
 * ``compiled`` — one ``ObjectGenericODE2`` over all body nodes whose force user function calls the numba
-  kernel (:func:`bearing_mbs.contact.kernel.scene_forces`). Measured fastest (EXUDYN_NOTES.md §B).
-* ``python`` — the same object calling the numpy twin (:mod:`bearing_mbs.contact.twin`).
+  kernel (:func:`bearing_mbs.elements.scene_forces`). Measured fastest (EXUDYN_NOTES.md §B).
+* ``python`` — the same object calling the numpy twin (:func:`bearing_mbs.elements.scene_forces_twin`).
 * ``native`` — Exudyn's own C++ ``ObjectContactSphereSphere`` per pair, for the normal force only. Its
   Hunt–Crossley model has damping factor 3(1 − e_HC)/2, so ``e_HC = 1 − 2d/3`` reproduces any law of the
   hysteresis family with factor d (for Lankarani–Nikravesh, e_HC = (1 + e²)/2). A circle–line pair becomes
@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearing_mbs.contact import kernel, twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
-from bearing_mbs.core.scene import GROUND, PairArrays, Scene
+from bearing_mbs.core.scene import GROUND, Scene
 from bearing_mbs.spec.fields import SpecError
+from bearing_mbs.elements import scene_forces, scene_forces_twin
 
 LINE_AS_SPHERE_RADIUS = 1e6
 
@@ -51,7 +51,7 @@ class ForceConnector:
 
     def __init__(self, packed, reference: np.ndarray, latched: np.ndarray, compiled: bool):
         self.packed, self.reference, self.latched = packed, reference, latched
-        self.evaluate = kernel.scene_forces if compiled else twin.scene_forces
+        self.evaluate = scene_forces if compiled else scene_forces_twin
         self.evaluations = 0
         self._q = np.empty_like(reference)
         self._forces = np.empty_like(reference)
@@ -66,9 +66,9 @@ class ForceConnector:
 
 def without_pairs(packed) -> tuple:
     """The packed scene with no contact pairs (for loads and drives next to native contacts)."""
-    empty = PairArrays(*(np.zeros((0,) + np.shape(column)[1:], dtype=np.asarray(column).dtype)
-                         for column in packed.pairs))
-    return packed._replace(pairs=empty)
+    empty = type(packed.pairs)(*(np.zeros((0,) + np.shape(column)[1:], dtype=np.asarray(column).dtype)
+                                 for column in packed.pairs))
+    return packed._replace(pairs=empty, elements=(empty, *packed.elements[1:]))
 
 
 def add_native_contacts(mbs, scene: Scene, body_objects: list[int], ground_object: int) -> None:

@@ -23,7 +23,7 @@ import time
 
 import numpy as np
 
-from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS, scene_forces
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.contact.state import advance_pair_state, initial_pair_state
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.failures import Failure
@@ -38,6 +38,7 @@ from bearing_mbs.engines.exudyn.connectors import (
     without_pairs,
 )
 from bearing_mbs.engines.reference.engine import diverged_message, output_grid, penetration_message
+from bearing_mbs.elements import pack_scene, scene_forces
 
 
 def check_supported(scene: Scene, solver: SolverSpec) -> None:
@@ -73,7 +74,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     check_supported(scene, solver)
     settings = solver.exudyn
     progress = progress or ProgressMeter()
-    packed = scene.pack()
+    packed = pack_scene(scene)
     n = scene.coordinate_count
     reference, _ = scene.initial_state()
     latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
@@ -119,8 +120,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     if native:
         add_native_contacts(mbs, scene, bodies, mbs.AddObject(ObjectGround()) if scene.pairs else -1)
     force_scene = without_pairs(packed) if native else packed
-    if force_scene.pairs.kind.size or force_scene.load_body.size or force_scene.drive_body.size:
-        # loads and drives next to native contacts go through the compiled kernel
+    if (scene.pairs and not native) or scene.forces:
+        # the other force elements next to native contacts go through the compiled kernel
         connector = ForceConnector(force_scene, reference, latched, compiled=settings.connector != "python")
         connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
         connector.evaluations = 0
@@ -166,7 +167,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         engine="exudyn", method=settings.method, step=settings.step, time=out_t, position=out_q, velocity=out_v,
         pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events, body_names=tuple(b.name for b in scene.bodies),
         pair_names=tuple(p.name for p in scene.pairs), stats=stats,
-        failure=monitor.failure, message=monitor.message, spec=spec,
+        failure=monitor.failure, message=monitor.message, spec=spec, topology=scene.topology,
         metadata={"connector": settings.connector, "exudyn_log": exudyn_log, "exudyn_version": exu.__version__},
     )
 

@@ -7,7 +7,7 @@ import time
 
 import numpy as np
 
-from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS, scene_forces
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.contact.state import initial_pair_state, penetration_bounds
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.failures import Failure
@@ -16,6 +16,7 @@ from bearing_mbs.core.scene import Scene
 from bearing_mbs.spec.solver import SolverSpec
 from bearing_mbs.engines.reference import integrators as ig
 from bearing_mbs.engines.reference.tableaus import TABLEAUS
+from bearing_mbs.elements import pack_scene, scene_forces
 
 _CHUNKS = 100
 _NO_TABLEAU = (np.zeros((0, 0)), np.zeros(0), np.zeros(0), np.zeros(0), 0, False)
@@ -33,7 +34,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
                        spec: dict | None = None) -> Result:
     settings = solver.reference
     progress = progress or ProgressMeter()
-    packed = scene.pack()
+    packed = pack_scene(scene)
     n, pair_count = scene.coordinate_count, len(scene.pairs)
     q, v = scene.initial_state()
     latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
@@ -133,7 +134,7 @@ def diverged_message(scene, solver, t, coordinate, q, v, latched, step, blown_up
     culprit = ""
     if scene.pairs:
         pair_out = np.empty((len(scene.pairs), N_PAIR_OUTPUTS))
-        scene_forces(scene.pack(), t, q, v, latched, np.empty_like(q), pair_out)
+        scene_forces(pack_scene(scene), t, q, v, latched, np.empty_like(q), pair_out)
         k = int(np.argmin(pair_out[:, 0]))
         culprit = (f" The most engaged pair in the last good state was {scene.pairs[k].name!r} "
                    f"(gap {pair_out[k, 0]:.3g} m, normal force {pair_out[k, 3]:.3g} N).")
@@ -144,7 +145,7 @@ def diverged_message(scene, solver, t, coordinate, q, v, latched, step, blown_up
 def penetration_message(scene, solver, t, k, q, v, step) -> str:
     pair = scene.pairs[k]
     depth = -_gap_of(scene, k, q, v)
-    bound = penetration_bounds(scene.pack().pairs, solver.penetration_limit)[k]
+    bound = penetration_bounds(pack_scene(scene).pairs, solver.penetration_limit)[k]
     return (f"t = {t:.6g} s: pair {pair.name!r} penetrates {depth:.3g} m, beyond the guard of {bound:.3g} m "
             f"(penetration_limit = {solver.penetration_limit:g} of the radius). Likely fix: reduce the step "
             f"(now {step:g} s) so the contact is resolved, or raise the stiffness (K = {pair.law.stiffness:.3g}).")
@@ -153,4 +154,4 @@ def penetration_message(scene, solver, t, k, q, v, step) -> str:
 def _gap_of(scene, k, q, v):
     from bearing_mbs.contact import twin
 
-    return float(twin.pair_geometry(scene.pack().pairs, q, v)[0][k])
+    return float(twin.pair_geometry(pack_scene(scene).pairs, q, v)[0][k])

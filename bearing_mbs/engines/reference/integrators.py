@@ -33,7 +33,7 @@ import math
 import numba
 import numpy as np
 
-from bearing_mbs.contact.kernel import scene_forces
+from bearing_mbs.elements import scene_forces
 from bearing_mbs.contact.state import advance_pair_state
 from bearing_mbs.engines.reference.constraints import (
     add_constraint_accelerations,
@@ -56,7 +56,7 @@ STEPS, REJECTED, EVALUATIONS = 0, 1, 2
 def accelerations(packed, t, q, v, latched, a, forces, pair_out, constraint_forces, complete=False):
     """a = M⁻¹ f(t, q, v) + gravity, made consistent with the constraints (their forces [N] into
     ``constraint_forces``). Returns (supplied, dissipated) power [W]. ``complete``: also the velocity-level
-    outputs of pairs apart (output instants only; see :func:`bearing_mbs.contact.kernel.scene_forces`)."""
+    outputs of pairs apart (output instants only; see :func:`bearing_mbs.elements.scene_forces`)."""
     supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, pair_out, complete)
     for i in range(q.size):
         a[i] = packed.inverse_mass[i] * forces[i] + packed.gravity[i]

@@ -29,17 +29,9 @@ from bearing_mbs.contact.line_contact import (
 from bearing_mbs.models.cylindrical_roller.drivetrain import GearTrain
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.lubrication import palmgren_drag_moment, roller_drag_coefficient
-from bearing_mbs.core.scene import (
-    GROUND,
-    Body,
-    ContactPair,
-    Drag,
-    Load,
-    PointOnLineConstraint,
-    Profile,
-    Scene,
-    VelocityServo,
-)
+from bearing_mbs.core.scene import GROUND, Body, ContactPair, PointOnLineConstraint, Profile, Scene
+from bearing_mbs.core.topology import Topology
+from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.models.building import initial_gaps, pair_law
 
@@ -76,15 +68,21 @@ def build_bearing_scene(spec: Spec) -> Scene:
     laws = {group: group_law(spec, geometry, group) for group in ("inner_race", "outer_race", "pocket", "land", "roller")}
     r_w = geometry.roller_diameter / 2
     pairs, constraints = [], []
+    groups = {"inner_race": [], "outer_race": [], "pocket": [], "roller": [], "land": []}
+
+    def add(group, pair):
+        groups[group].append(len(pairs))
+        pairs.append(pair)
+
     for k in range(geometry.rollers):
         roller = first_roller + k
-        pairs.append(ContactPair(f"roller{k}-inner_race", "circle_circle", INNER_RING, roller, laws["inner_race"],
+        add("inner_race", ContactPair(f"roller{k}-inner_race", "circle_circle", INNER_RING, roller, laws["inner_race"],
                                  radius_b=r_w, radius_a=geometry.inner_race_diameter / 2))
-        pairs.append(ContactPair(f"roller{k}-outer_race", "circle_in_circle", GROUND, roller, laws["outer_race"],
+        add("outer_race", ContactPair(f"roller{k}-outer_race", "circle_in_circle", GROUND, roller, laws["outer_race"],
                                  radius_b=r_w, radius_a=geometry.outer_race_diameter / 2))
         if spec.cage.model == "penalty":
             for label, point in geometry.pocket_points(k).items():
-                pairs.append(ContactPair(f"roller{k}-pocket_{label}", "circle_point", CAGE, roller, laws["pocket"],
+                add("pocket", ContactPair(f"roller{k}-pocket_{label}", "circle_point", CAGE, roller, laws["pocket"],
                                          radius_b=r_w, anchor=point))
         elif spec.cage.model == "constraint":
             psi = geometry.roller_angles[k]
@@ -92,13 +90,13 @@ def build_bearing_scene(spec: Spec) -> Scene:
                                                      (math.cos(psi), math.sin(psi))))
         else:
             neighbour = first_roller + (k + 1) % geometry.rollers
-            pairs.append(ContactPair(f"roller{k}-roller{(k + 1) % geometry.rollers}", "circle_circle", roller,
+            add("roller", ContactPair(f"roller{k}-roller{(k + 1) % geometry.rollers}", "circle_circle", roller,
                                      neighbour, laws["roller"], radius_b=r_w, radius_a=r_w))
     if caged and spec.bearing.cage_guidance == "inner_land":
-        pairs.append(ContactPair("cage-inner_land", "circle_in_circle", CAGE, INNER_RING, laws["land"],
+        add("land", ContactPair("cage-inner_land", "circle_in_circle", CAGE, INNER_RING, laws["land"],
                                  radius_b=geometry.inner_land_radius, radius_a=geometry.cage_bore_radius))
     elif caged and spec.bearing.cage_guidance == "outer_land":
-        pairs.append(ContactPair("cage-outer_land", "circle_in_circle", GROUND, CAGE, laws["land"],
+        add("land", ContactPair("cage-outer_land", "circle_in_circle", GROUND, CAGE, laws["land"],
                                  radius_b=geometry.cage_outer_radius, radius_a=geometry.outer_land_radius))
 
     loads, drives = [], []
@@ -119,8 +117,14 @@ def build_bearing_scene(spec: Spec) -> Scene:
 
     drags = tuple(Drag(f"roller{k}-drag", first_roller + k, coefficient) for k in range(geometry.rollers)
                   if (coefficient := roller_drag(spec, geometry)) > 0)
-    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), tuple(loads), tuple(drives),
-                  drags, gravity=(0.0, -spec.scenario.gravity))
+    roles = {"inner_ring": [INNER_RING], "rollers": list(range(first_roller, first_roller + geometry.rollers))}
+    if caged:
+        roles["cage"] = [CAGE]
+    if groups["pocket"]:
+        groups["pocket"] = np.reshape(groups["pocket"], (geometry.rollers, -1))
+    topology = Topology(bodies=roles, pairs={group: indices for group, indices in groups.items() if len(indices)})
+    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), (*loads, *drives, *drags),
+                  gravity=(0.0, -spec.scenario.gravity), topology=topology)
     _reject_initial_overlap(scene, geometry)
     return scene
 

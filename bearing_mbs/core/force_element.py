@@ -1,0 +1,108 @@
+"""The force-element protocol and its registry (in the spirit of Drake's ``ForceElement``).
+
+A force element is one kind of scene item that applies forces to bodies: contact pairs, time-profile loads,
+velocity servos, viscous drags, or a kind a user registers. Each kind is one module that provides the
+:class:`ForceElement` record below, and both engines loop over the registry: adding a kind touches no engine.
+
+The contract of the evaluation functions (compiled and numpy twin alike)::
+
+    add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete) -> None
+
+* ``parameters`` — the kind's items packed into arrays (a ``NamedTuple`` of numpy arrays, from ``pack``);
+* ``t`` [s], ``q`` (3N,) positions (x, y, θ per body), ``v`` (3N,) velocities;
+* ``forces`` (3N,) — generalized forces [N, N, N m], to be **added to**;
+* ``power`` (2,) — running totals [W] to be **added to**: ``power[0]`` the power the kind supplies (loads,
+  drives), ``power[1]`` the power it dissipates (friction, damping, drag). A conservative force supplies and
+  dissipates nothing here: its work is the change of the kind's ``potential_energy``, which closes the audit;
+* ``latched`` (P,), ``pair_out`` (P, k) — the contact pairs' per-pair state and outputs, read and written by
+  the contact-pair kind only (other kinds ignore them);
+* ``complete`` — False inside integration stages: a kind may skip outputs that no force needs.
+
+Body index −1 is the ground. All quantities are SI.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+
+def no_potential_energy(parameters, position: np.ndarray, pair_output: np.ndarray) -> None:
+    """For kinds whose work is counted as supplied or dissipated power: they store no energy."""
+    return None
+
+
+@dataclass(frozen=True)
+class ForceElement:
+    """One kind of force element.
+
+    * ``name`` — plural noun used in scene counts and reports (``"drags"``);
+    * ``item_type`` — the frozen dataclass of one item in :attr:`bearing_mbs.core.scene.Scene.forces`, with a
+      ``body`` or ``body_a``/``body_b`` index and a ``name``;
+    * ``parameters`` — the ``NamedTuple`` class that ``pack`` returns (it identifies the kind in compiled code);
+    * ``pack(items) -> parameters`` — the items as arrays;
+    * ``add_forces`` — the compiled (numba ``njit``) evaluation, contract in the module docstring;
+    * ``add_forces_twin`` — its readable numpy twin, same contract, held to the compiled one by the tests;
+    * ``potential_energy(parameters, position, pair_output) -> (T,) array | None`` — the energy the kind
+      stores [J] at each output instant, from the result's positions (T, 3N) and pair outputs (T, P, k).
+    """
+
+    name: str
+    item_type: type
+    parameters: type
+    pack: Callable[[Sequence[Any]], Any]
+    add_forces: Callable
+    add_forces_twin: Callable
+    potential_energy: Callable = no_potential_energy
+
+    def bodies(self, item) -> tuple[int, ...]:
+        """Body indices an item refers to (−1 is the ground)."""
+        if hasattr(item, "body"):
+            return (item.body,)
+        return (item.body_a, item.body_b)
+
+
+class ForceElementRegistry(Mapping):
+    """Force-element kinds in evaluation order, by name. :meth:`register` adds a kind from outside the package;
+    the order of registration is the order of evaluation (and so of floating-point accumulation)."""
+
+    def __init__(self, elements: Iterable[ForceElement] = ()):
+        self._elements: dict[str, ForceElement] = {}
+        for element in elements:
+            self.register(element)
+
+    def register(self, element: ForceElement) -> ForceElement:
+        for other in self._elements.values():
+            if other is not element and (other.name == element.name or other.item_type is element.item_type
+                                         or other.parameters is element.parameters):
+                raise ValueError(f"force element {element.name!r} clashes with the registered {other.name!r}")
+        self._elements[element.name] = element
+        return element
+
+    def unregister(self, name: str) -> None:
+        self._elements.pop(name, None)
+
+    def of_item(self, item) -> ForceElement:
+        for element in self._elements.values():
+            if isinstance(item, element.item_type):
+                return element
+        raise TypeError(f"{type(item).__name__} is not a registered force element; registered: "
+                        f"{', '.join(e.item_type.__name__ for e in self._elements.values())}")
+
+    def of_parameters(self, parameters_type: type) -> ForceElement:
+        for element in self._elements.values():
+            if element.parameters is parameters_type:
+                return element
+        raise TypeError(f"no registered force element packs {parameters_type.__name__}")
+
+    def __getitem__(self, name: str) -> ForceElement:
+        return self._elements[name]
+
+    def __iter__(self):
+        return iter(self._elements)
+
+    def __len__(self) -> int:
+        return len(self._elements)

@@ -1,0 +1,132 @@
+"""A scene as arrays, and the evaluation of all its forces by looping over the registered force elements.
+
+:func:`pack_scene` packs the contact pairs and every force-element kind present in the scene (registry order)
+into :class:`PackedScene`. :func:`scene_forces` (compiled) and :func:`scene_forces_twin` (numpy) add the forces
+of every kind; in compiled code each kind's parameters have their own type, and the call to each kind's
+registered compiled function is laid out when numba types the scene's tuple of kinds. Gravity and constraint forces are the engines' business.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numba
+import numpy as np
+from numba.extending import overload
+
+from bearing_mbs.core.scene import CONSTRAINT_KINDS, Scene
+from bearing_mbs.elements import contact_pairs
+from bearing_mbs.elements.contact_pairs import PairArrays
+from bearing_mbs.elements.registry import FORCE_ELEMENTS
+
+
+class ConstraintArrays(NamedTuple):
+    """Constraints as arrays (unused columns of a kind are zero)."""
+
+    kind: np.ndarray  # int64, index into CONSTRAINT_KINDS
+    body_a: np.ndarray  # int64
+    body_b: np.ndarray  # int64
+    length: np.ndarray  # [m], distance constraints
+    anchor: np.ndarray  # (C, 2) [m], point-on-line constraints, in a's frame
+    direction: np.ndarray  # (C, 2), point-on-line constraints, unit, in a's frame
+
+
+class PackedScene(NamedTuple):
+    """A scene as flat arrays. Coordinates are ordered body by body: (x, y, θ) of body 0, then body 1, …
+
+    ``elements`` holds the packed parameters of every force-element kind present, in registry order; the
+    contact pairs always come first and are also ``pairs`` (the engines update their per-pair state).
+    """
+
+    inverse_mass: np.ndarray  # (3N,) 1/m, 1/m, 1/I; 0 on fixed coordinates
+    gravity: np.ndarray  # (3N,) gravitational acceleration on free translational coordinates
+    pairs: PairArrays
+    constraints: ConstraintArrays
+    elements: tuple
+
+
+def _pack_constraints(constraints) -> ConstraintArrays:
+    def column(get, dtype=float):
+        return np.array([get(c) for c in constraints], dtype=dtype)
+
+    return ConstraintArrays(
+        kind=column(lambda c: CONSTRAINT_KINDS.index(type(c)), np.int64),
+        body_a=column(lambda c: c.body_a, np.int64),
+        body_b=column(lambda c: c.body_b, np.int64),
+        length=column(lambda c: getattr(c, "length", 0.0)),
+        anchor=column(lambda c: getattr(c, "anchor", (0.0, 0.0))).reshape(-1, 2),
+        direction=column(lambda c: getattr(c, "direction", (0.0, 0.0))).reshape(-1, 2),
+    )
+
+
+def pack_scene(scene: Scene) -> PackedScene:
+    free = np.array([b.free for b in scene.bodies], dtype=bool).ravel()
+    inverse_mass = np.array([[1 / b.mass, 1 / b.mass, 1 / b.inertia] for b in scene.bodies]).ravel() * free
+    gravity = np.zeros(scene.coordinate_count)
+    gravity[0::3], gravity[1::3] = scene.gravity
+    gravity *= free
+    for item in scene.forces:
+        FORCE_ELEMENTS.of_item(item)  # an unregistered kind is an error, not silently dropped
+    pairs = contact_pairs.pack(scene.pairs)
+    elements = [pairs]
+    for element in FORCE_ELEMENTS.values():
+        items = scene.items_of(element.item_type)
+        if items and element is not contact_pairs.ELEMENT:
+            elements.append(element.pack(items))
+    return PackedScene(inverse_mass=inverse_mass, gravity=gravity, pairs=pairs,
+                       constraints=_pack_constraints(scene.constraints), elements=tuple(elements))
+
+
+def scene_counts(scene: Scene) -> dict:
+    """Item counts, for the 'only what is needed' tests and for reports (gravity counts as a load)."""
+    counts = {"bodies": len(scene.bodies), "pairs": len(scene.pairs), "constraints": len(scene.constraints)}
+    for element in FORCE_ELEMENTS.values():
+        if element is not contact_pairs.ELEMENT:
+            counts[element.name] = len(scene.items_of(element.item_type))
+    counts["loads"] += 1 if any(scene.gravity) else 0
+    counts["sensors"] = len(scene.sensors)
+    return counts
+
+
+def add_element_forces(elements, t, q, v, latched, forces, pair_out, power, complete):
+    """Add the forces of every kind in ``elements`` (the numpy twins here; compiled code uses the registered
+    compiled functions, see the overload below)."""
+    for parameters in elements:
+        FORCE_ELEMENTS.of_parameters(type(parameters)).add_forces_twin(
+            parameters, t, q, v, latched, forces, pair_out, power, complete)
+
+
+@overload(add_element_forces)
+def _add_element_forces_compiled(elements, t, q, v, latched, forces, pair_out, power, complete):
+    """Compiled form: one call per kind, with constant tuple indices (a heterogeneous tuple cannot be iterated
+    in compiled code). The body is generated for the tuple's length when numba types the call, and each call
+    goes to the compiled function registered for that position's parameter type."""
+    compiled = [FORCE_ELEMENTS.of_parameters(kind.instance_class).add_forces for kind in elements.types]
+    arguments = "t, q, v, latched, forces, pair_out, power, complete"
+    calls = [f"    add_{i}(elements[{i}], {arguments})" for i in range(len(compiled))] or ["    pass"]
+    source = "\n".join([f"def add_all(elements, {arguments}):", *calls])
+    namespace = {f"add_{i}": function for i, function in enumerate(compiled)}
+    exec(source, namespace)
+    return namespace["add_all"]
+
+
+@numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
+def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
+    """Generalized forces [N, N, N m per body] of all force elements, written into ``forces``.
+
+    ``pair_out`` (pairs × :data:`~bearing_mbs.contact.kernel.PAIR_OUTPUTS`) receives each pair's outputs.
+    Returns (supplied, dissipated) power [W]. ``complete=False`` (inside integration stages) lets kinds skip
+    outputs no force needs.
+    """
+    forces[:] = 0.0
+    power = np.zeros(2)
+    add_element_forces(packed.elements, t, q, v, latched, forces, pair_out, power, complete)
+    return power[0], power[1]
+
+
+def scene_forces_twin(packed, t, q, v, latched, forces, pair_out, complete=True):
+    """Same contract as :func:`scene_forces`, with every kind's numpy twin (always complete)."""
+    forces[:] = 0.0
+    power = np.zeros(2)
+    add_element_forces(packed.elements, t, q, v, latched, forces, pair_out, power, True)
+    return power[0], power[1]

@@ -1,0 +1,160 @@
+"""Contact pairs as a force element: normal force, friction and rolling resistance of every pair.
+
+The compiled :func:`add_forces` loops over the pairs calling the pure functions of :mod:`bearing_mbs.contact`
+(kinematics, normal and friction laws; compiled inline there, plain Python elsewhere); :func:`add_forces_twin`
+does the same on whole arrays with numpy. The tests hold the two to 1e-12.
+
+Per pair it writes the columns of :data:`PAIR_OUTPUTS` into ``pair_out``; the power lost to damping, friction
+and rolling resistance goes to ``power[1]``. The elastic energy of the pairs is their potential energy.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numba
+import numpy as np
+
+from bearing_mbs.contact import friction, normal
+from bearing_mbs.contact.friction import FRICTION_LAWS
+from bearing_mbs.contact.kernel import (
+    N_PAIR_OUTPUTS,
+    PAIR_OUTPUTS,
+    body_trigonometry,
+    pair_motion,
+    pair_position,
+    regularised_sign,
+)
+from bearing_mbs.contact.kinematics import PAIR_KINDS
+from bearing_mbs.contact.twin import pair_geometry
+from bearing_mbs.contact.twin import regularised_sign as regularised_sign_twin
+from bearing_mbs.core.force_element import ForceElement
+from bearing_mbs.core.scene import ContactPair
+
+
+class PairArrays(NamedTuple):
+    """Contact pairs as arrays (one entry per pair), read by the kernel and its numpy twin."""
+
+    kind: np.ndarray  # int64, index into PAIR_KINDS
+    body_a: np.ndarray  # int64, −1 = ground
+    body_b: np.ndarray  # int64
+    anchor: np.ndarray  # (P, 2) [m]
+    direction: np.ndarray  # (P, 2)
+    radius_a: np.ndarray  # [m]
+    radius_b: np.ndarray  # [m]
+    stiffness: np.ndarray  # [N/m^n]
+    exponent: np.ndarray  # [-]
+    damping_factor: np.ndarray  # [-]
+    approach_speed_floor: np.ndarray  # [m/s]
+    friction_law: np.ndarray  # int64, index into FRICTION_LAWS
+    friction_coefficient: np.ndarray  # [-]
+    regularisation_speed: np.ndarray  # [m/s]
+    rolling_resistance_arm: np.ndarray  # [m]
+
+
+def pack(pairs) -> PairArrays:
+    def column(get, dtype=float):
+        return np.array([get(p) for p in pairs], dtype=dtype)
+
+    return PairArrays(
+        kind=column(lambda p: PAIR_KINDS.index(p.kind), np.int64),
+        body_a=column(lambda p: p.body_a, np.int64),
+        body_b=column(lambda p: p.body_b, np.int64),
+        anchor=column(lambda p: p.anchor).reshape(-1, 2),
+        direction=column(lambda p: p.direction).reshape(-1, 2),
+        radius_a=column(lambda p: p.radius_a),
+        radius_b=column(lambda p: p.radius_b),
+        stiffness=column(lambda p: p.law.stiffness),
+        exponent=column(lambda p: p.law.exponent),
+        damping_factor=column(lambda p: p.law.damping_factor),
+        approach_speed_floor=column(lambda p: p.law.approach_speed_floor),
+        friction_law=column(lambda p: FRICTION_LAWS.index(p.law.friction_law), np.int64),
+        friction_coefficient=column(lambda p: p.law.friction_coefficient),
+        regularisation_speed=column(lambda p: p.law.regularisation_speed),
+        rolling_resistance_arm=column(lambda p: p.law.rolling_resistance_arm),
+    )
+
+
+@numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
+def add_forces(pairs, t, q, v, latched, forces, pair_out, power, complete):
+    """Forces of all pairs. ``complete=False`` (inside integration stages) skips the velocity-level outputs of
+    pairs apart, which no force needs (about a third of the evaluation for a bearing, where most pocket and
+    upper raceway pairs are apart): their gap rate, slip and rolling speed are left 0."""
+    cos_theta, sin_theta = body_trigonometry(q)
+    for k in range(pairs.kind.size):
+        a, b, kind = pairs.body_a[k], pairs.body_b[k], pairs.kind[k]
+        ra, rb = pairs.radius_a[k], pairs.radius_b[k]
+        gap, nx, ny, px, py = pair_position(
+            kind, a, b, pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0], pairs.direction[k, 1],
+            ra, rb, q, cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
+        gap_rate = slip = spin = rolling = 0.0
+        if complete or gap < 0.0:
+            gap_rate, slip, cx, cy, spin, rolling = pair_motion(kind, a, b, ra, rb, gap, nx, ny, px, py, q, v)
+        fn = ft = moment = loss = 0.0
+        if gap < 0.0:
+            approach = normal.reference_approach_speed(latched[k], gap_rate, pairs.approach_speed_floor[k])
+            elastic = normal.elastic_force(gap, pairs.stiffness[k], pairs.exponent[k])
+            fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
+            law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
+            ft = friction.friction_force(fn, pairs.friction_coefficient[k], regularised_sign(law, slip, vreg))
+            arm = pairs.rolling_resistance_arm[k]
+            if arm > 0.0:
+                spin_sign = regularised_sign(law, spin * pairs.radius_b[k], vreg)
+                moment = friction.rolling_resistance_moment(fn, arm, spin_sign)
+            loss = -(fn - elastic) * gap_rate - ft * slip - moment * spin
+            fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
+            forces[3 * b] += fx
+            forces[3 * b + 1] += fy
+            forces[3 * b + 2] += (cx - q[3 * b]) * fy - (cy - q[3 * b + 1]) * fx + moment
+            if a >= 0:
+                forces[3 * a] -= fx
+                forces[3 * a + 1] -= fy
+                forces[3 * a + 2] -= (cx - q[3 * a]) * fy - (cy - q[3 * a + 1]) * fx + moment
+        pair_out[k, 0] = gap
+        pair_out[k, 1] = gap_rate
+        pair_out[k, 2] = slip
+        pair_out[k, 3] = fn
+        pair_out[k, 4] = ft
+        pair_out[k, 5] = moment
+        pair_out[k, 6] = loss
+        pair_out[k, 7] = rolling
+        power[1] += loss
+
+
+def add_forces_twin(pairs, t, q, v, latched, forces, pair_out, power, complete):
+    """Numpy twin of :func:`add_forces`; always complete."""
+    gap, gap_rate, slip, nx, ny, cx, cy, spin, rolling = pair_geometry(pairs, q, v)
+    approach = normal.reference_approach_speed(latched, gap_rate, pairs.approach_speed_floor)
+    fn = normal.hysteresis_force(gap, gap_rate, pairs.stiffness, pairs.exponent, pairs.damping_factor, approach)
+    ft = friction.friction_force(
+        fn, pairs.friction_coefficient, regularised_sign_twin(pairs.friction_law, slip, pairs.regularisation_speed)
+    )
+    spin_sign = regularised_sign_twin(pairs.friction_law, spin * pairs.radius_b, pairs.regularisation_speed)
+    moment = friction.rolling_resistance_moment(fn, pairs.rolling_resistance_arm, spin_sign)
+    damping = fn - normal.elastic_force(gap, pairs.stiffness, pairs.exponent)
+    loss = -damping * gap_rate - ft * slip - moment * spin
+
+    fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
+    qb = q.reshape(-1, 3)
+    a, b = pairs.body_a, pairs.body_b
+    torque_b = (cx - qb[b, 0]) * fy - (cy - qb[b, 1]) * fx + moment
+    body_forces = forces.reshape(-1, 3)
+    np.add.at(body_forces, b, np.column_stack([fx, fy, torque_b]))
+    on_a = a >= 0
+    ai = a[on_a]
+    torque_a = (cx[on_a] - qb[ai, 0]) * fy[on_a] - (cy[on_a] - qb[ai, 1]) * fx[on_a] + moment[on_a]
+    np.add.at(body_forces, ai, -np.column_stack([fx[on_a], fy[on_a], torque_a]))
+    pair_out[:, :N_PAIR_OUTPUTS] = np.column_stack([gap, gap_rate, slip, fn, ft, moment, loss, rolling])
+    power[1] += loss.sum()
+
+
+def potential_energy(pairs, position, pair_output):
+    """Elastic energy of the pairs [J] at each output instant, from the recorded gaps."""
+    gap = pair_output[:, :, PAIR_OUTPUTS.index("gap")]
+    if gap.shape[1] == 0:
+        return np.zeros(gap.shape[0])
+    return np.sum(normal.elastic_energy(gap, pairs.stiffness, pairs.exponent), axis=1)
+
+
+ELEMENT = ForceElement(name="pairs", item_type=ContactPair, parameters=PairArrays, pack=pack,
+                       add_forces=add_forces, add_forces_twin=add_forces_twin, potential_energy=potential_energy)

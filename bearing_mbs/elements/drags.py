@@ -1,0 +1,57 @@
+"""Viscous drags: force −c·v on a body's centre and torque −c_θ·ω (e.g. the lubricant's drag on a roller)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numba
+import numpy as np
+
+from bearing_mbs.core.force_element import ForceElement
+
+
+@dataclass(frozen=True)
+class Drag:
+    """Viscous drag on a body: force −linear·v [N] on its centre and torque −angular·ω [N m]; linear
+    [N s/m] >= 0, angular [N m s/rad] >= 0."""
+
+    name: str
+    body: int
+    linear: float
+    angular: float = 0.0
+
+
+class DragArrays(NamedTuple):
+    body: np.ndarray  # (G,) int64
+    linear: np.ndarray  # (G,) [N s/m]
+    angular: np.ndarray  # (G,) [N m s/rad]
+
+
+def pack(drags) -> DragArrays:
+    return DragArrays(body=np.array([d.body for d in drags], dtype=np.int64),
+                      linear=np.array([d.linear for d in drags], dtype=float),
+                      angular=np.array([d.angular for d in drags], dtype=float))
+
+
+@numba.njit(cache=True, inline="always")
+def add_forces(drags, t, q, v, latched, forces, pair_out, power, complete):
+    for j in range(drags.body.size):
+        i = 3 * drags.body[j]
+        linear, angular = drags.linear[j], drags.angular[j]
+        forces[i] -= linear * v[i]
+        forces[i + 1] -= linear * v[i + 1]
+        forces[i + 2] -= angular * v[i + 2]
+        power[1] += linear * (v[i] ** 2 + v[i + 1] ** 2) + angular * v[i + 2] ** 2
+
+
+def add_forces_twin(drags, t, q, v, latched, forces, pair_out, power, complete):
+    body_forces, velocities = forces.reshape(-1, 3), v.reshape(-1, 3)
+    for j, body in enumerate(drags.body):
+        coefficients = np.array([drags.linear[j], drags.linear[j], drags.angular[j]])
+        body_forces[body] -= coefficients * velocities[body]
+        power[1] += coefficients @ velocities[body] ** 2
+
+
+ELEMENT = ForceElement(name="drags", item_type=Drag, parameters=DragArrays, pack=pack, add_forces=add_forces,
+                       add_forces_twin=add_forces_twin)
