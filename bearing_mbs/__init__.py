@@ -1,7 +1,6 @@
-"""bearing_mbs: transient dynamics of rolling bearings on Exudyn, cross-checked by a reference engine."""
+"""bearing_mbs: transient dynamics of rolling bearings on Exudyn, cross-checked by a reference engine.
 
-from bearing_mbs._numba_cache import invalidate_if_stale
-
-invalidate_if_stale()
+Importing the package changes nothing outside it: no backend switches, no logger levels, no files touched.
+"""
 
 __version__ = "0.1.0"

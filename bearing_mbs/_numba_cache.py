@@ -1,9 +1,14 @@
 """Invalidate numba's on-disk cache when any compiled source of the package changes.
 
 numba keys a cached function on its own file only: after an edit to ``contact/normal.py`` a cached
-``engines/reference/integrators.integrate`` would still hold the old law. At import, the package hashes all
-the sources that compiled code is made of (:data:`COMPILED_SOURCES`; keep numba code there); when the hash differs from the one stored next to the cache, every ``*.nbi``/``*.nbc`` file of
-the package is removed and numba recompiles.
+``engines/reference/integrators.integrate`` would still hold the old law. :func:`invalidate_if_stale` hashes all
+the sources that compiled code is made of (:data:`COMPILED_SOURCES`; keep numba code there); when the hash
+differs from the one stored next to the cache, every ``*.nbi``/``*.nbc`` file of the package is removed and
+numba recompiles.
+
+It is called by the entry points, once per process and before any compiled code runs (the command line, the
+test session, the benchmarks), never at import: a Dask worker or a library user's process does not delete
+caches under another process's feet. A sweep's driver calls it before its workers start.
 """
 
 from __future__ import annotations
@@ -14,7 +19,7 @@ from pathlib import Path
 PACKAGE = Path(__file__).resolve().parent
 STAMP = PACKAGE / "__pycache__" / "numba_sources.sha256"
 #: Globs (relative to the package) of every file whose code numba compiles or whose types it reads.
-COMPILED_SOURCES = ("contact/*.py", "engines/reference/*.py", "core/scene.py")
+COMPILED_SOURCES = ("contact/*.py", "core/*.py", "elements/*.py", "engines/reference/*.py")
 
 
 def sources_digest() -> str:

@@ -12,10 +12,12 @@ from pathlib import Path
 
 from bearing_mbs.models import MODELS, build_scene
 from bearing_mbs.engines import simulate
+from bearing_mbs.numerics.advisor import step_warning
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.spec import Spec, to_mapping
+from bearing_mbs.spec.solver import SolverSpec
 from bearing_mbs.elements import scene_counts
 
 log = logging.getLogger(__name__)
@@ -27,10 +29,34 @@ SUMMARY_FILE = "summary.json"
 def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, Result]:
     """Build the scene (all validation happens here, before any simulation) and run it."""
     scene = build_scene(spec)
-    result = simulate(scene, spec.solver, spec.scenario.end_time, progress, spec=to_mapping(spec))
+    result = simulate_advised(scene, spec.solver, spec.scenario.end_time, progress, spec=to_mapping(spec))
     if not result.success:
         log.warning("%s: %s", spec.scenario.name, result.message)
     return scene, result
+
+
+def simulate_advised(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
+                     spec: dict | None = None) -> Result:
+    """:func:`bearing_mbs.engines.simulate`, with the step advisor's warning when a fixed explicit step exceeds
+    the advised stability limit: logged, and recorded in ``result.metadata["warnings"]``."""
+    warnings = step_warnings(scene, solver)
+    result = simulate(scene, solver, end_time, progress, spec)
+    if warnings:
+        result.metadata.setdefault("warnings", []).extend(warnings)
+    return result
+
+
+def step_warnings(scene: Scene, solver: SolverSpec) -> list[str]:
+    """The step advisor's warnings for this run (logged); advice never fails a run."""
+    try:
+        message = step_warning(scene, solver)
+    except Exception as error:  # the advisor is advice: a failure of its estimate must not stop a run
+        log.debug("step advisor failed on %s: %s", scene.name, error)
+        return []
+    if message:
+        log.warning(message)
+        return [message]
+    return []
 
 
 def summarize(spec: Spec, scene: Scene, result: Result) -> dict:

@@ -39,6 +39,7 @@ from bearing_mbs.models import build_scene
 from cases import SCENARIOS, seed_spec
 from bearing_mbs.contact.friction import ZERO_SLIP_SLOPE
 from bearing_mbs.engines import simulate
+from bearing_mbs.runner import simulate_advised
 from bearing_mbs.engines.reference.tableaus import DOPRI5, RK4
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
@@ -178,12 +179,12 @@ def test_step_warning_only_above_the_limit_and_only_for_fixed_explicit_steps():
 def test_simulate_logs_and_records_the_warning(caplog):
     _, scene = nominal()
     solver = SolverSpec(engine="reference", output_interval=1e-5, reference=ReferenceSolver(method="rk4", step=5e-7))
-    with caplog.at_level(logging.WARNING, logger="bearing_mbs.engines"):
-        result = simulate(scene, solver, 1e-5)
+    with caplog.at_level(logging.WARNING, logger="bearing_mbs.runner"):
+        result = simulate_advised(scene, solver, 1e-5)
     assert result.success
     assert len(result.metadata["warnings"]) == 1 and "exceeds the advised stability limit" in caplog.text
     quiet = SolverSpec(engine="reference", output_interval=1e-5, reference=ReferenceSolver(method="rk4", step=1e-7))
-    assert "warnings" not in simulate(scene, quiet, 1e-5).metadata
+    assert "warnings" not in simulate_advised(scene, quiet, 1e-5).metadata
 
 
 def test_advise_command_prints_the_limits(capsys):

@@ -23,7 +23,7 @@ import pytest
 
 from bearing_mbs.models import build_scene
 from cases import SCENARIOS
-from bearing_mbs.engines import simulate
+from bearing_mbs.runner import simulate_advised
 from bearing_mbs.runner import summarize
 from bearing_mbs.models import load_spec
 from bearing_mbs.studies.spurious_slip import check_spurious_slip
@@ -43,7 +43,7 @@ def spec_for(engine, method, step):
 def run(engine, method, step):
     spec = spec_for(engine, method, step)
     scene = build_scene(spec)
-    result = simulate(scene, spec.solver, END)
+    result = simulate_advised(scene, spec.solver, END)
     assert result.success, result.message  # bounded: no guard stops either run
     return spec, scene, result
 

@@ -210,8 +210,8 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
 def _reject_initial_overlap(scene: Scene, geometry: BearingGeometry) -> None:
     """Only a preload may make raceway pairs overlap at the start; anything else is a geometry error."""
     preload = geometry.clearance < 0
-    for pair, gap in zip(scene.pairs, initial_gaps(scene)):
-        raceway = pair.name.endswith("_race")
-        if gap < -1e-12 and not (raceway and preload):
+    raceways = set(scene.topology.group("inner_race").tolist() + scene.topology.group("outer_race").tolist())
+    for k, (pair, gap) in enumerate(zip(scene.pairs, initial_gaps(scene))):
+        if gap < -1e-12 and not (k in raceways and preload):
             raise SpecError("bearing", pair.name, f"overlaps by {-gap:.3g} m at the start: check the cage and "
                             f"land geometry")

@@ -37,18 +37,20 @@ def window(spec, result) -> np.ndarray:
 
 
 def roller_indices(scene) -> np.ndarray:
-    return np.array([i for i, body in enumerate(scene.bodies) if body.name.startswith("roller")])
+    """Body indices of the rollers, in roller order."""
+    return scene.topology.role("rollers")
 
 
-def pair_columns(scene, suffix: str) -> np.ndarray:
-    return np.array([k for k, pair in enumerate(scene.pairs) if pair.name.endswith(suffix)], dtype=int)
+def pair_columns(scene, group: str) -> np.ndarray:
+    """Pair indices of a contact group (``inner_race``, ``outer_race``, ``pocket``, ``land``, ``roller``), flat,
+    in roller order."""
+    return scene.topology.group(group).ravel()
 
 
 def cage_speed(scene, result) -> np.ndarray:
     """Cage angular speed [rad/s] (T,): the cage body's, or the rollers' mean orbital speed without a cage."""
-    names = [b.name for b in scene.bodies]
-    if "cage" in names:
-        return result.velocity[:, 3 * names.index("cage") + 2]
+    if scene.topology.has("cage"):
+        return result.velocity[:, 3 * scene.topology.body("cage") + 2]
     rollers = roller_indices(scene)
     x, y = result.position[:, 3 * rollers], result.position[:, 3 * rollers + 1]
     vx, vy = result.velocity[:, 3 * rollers], result.velocity[:, 3 * rollers + 1]
@@ -58,10 +60,11 @@ def cage_speed(scene, result) -> np.ndarray:
 def slip_ratios(scene, result, race: str, load_fraction: float) -> np.ndarray:
     """(T, Z) slip ratios at ``race`` ('inner_race' or 'outer_race'); NaN where the contact carries less
     than ``load_fraction`` of the largest roller load."""
-    columns = pair_columns(scene, f"-{race}")
+    columns = pair_columns(scene, race)
     force = result.pair_series("normal_force")[:, columns]
     slip, rolling = result.pair_series("slip")[:, columns], result.pair_series("rolling_speed")[:, columns]
-    largest = result.pair_series("normal_force")[:, pair_columns(scene, "_race")].max(axis=1, keepdims=True)
+    raceways = np.concatenate([pair_columns(scene, "inner_race"), pair_columns(scene, "outer_race")])
+    largest = result.pair_series("normal_force")[:, raceways].max(axis=1, keepdims=True)
     loaded = (force > 0) & (force >= load_fraction * largest)
     rolling_floor = np.array([scene.pairs[k].law.regularisation_speed for k in columns])
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -78,7 +81,7 @@ def roller_orbit_angles(scene, result) -> np.ndarray:
 def load_distribution(scene, result, mask, bins: int) -> tuple[np.ndarray, np.ndarray]:
     """Mean inner-raceway load [N] against orbital angle [deg] (bin centres) over the instants in ``mask``."""
     angle = np.degrees(roller_orbit_angles(scene, result)[mask]).ravel()
-    force = result.pair_series("normal_force")[mask][:, pair_columns(scene, "-inner_race")].ravel()
+    force = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].ravel()
     edges = np.linspace(0, 360, bins + 1)
     which = np.clip(np.digitize(angle, edges) - 1, 0, bins - 1)
     sums = np.bincount(which, weights=force, minlength=bins)
@@ -95,12 +98,12 @@ def bearing_metrics(spec, scene, result) -> dict:
     ratio = float(np.mean(cage_speed(scene, result)[mask]) / np.mean(epicyclic[mask]))
     fraction = spec.analysis.load_fraction
     slips = {race: slip_ratios(scene, result, race, fraction)[mask] for race in ("inner_race", "outer_race")}
-    inner_loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "-inner_race")]
+    inner_loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")]
     angles, loads = load_distribution(scene, result, mask, 2 * geometry.rollers)
     offset = result.position[mask][:, :2].mean(axis=0)
 
-    pocket = [k for k, pair in enumerate(scene.pairs) if "-pocket_" in pair.name]
-    if pocket:
+    pocket = pair_columns(scene, "pocket")
+    if pocket.size:
         max_pocket = float(result.pair_series("normal_force")[mask][:, pocket].max())
     elif scene.constraints:
         max_pocket = float(result.constraint_forces[mask].max())
@@ -110,10 +113,9 @@ def bearing_metrics(spec, scene, result) -> dict:
     def largest(values):
         return float(np.nanmax(np.abs(values))) if np.isfinite(values).any() else None
 
-    names = [b.name for b in scene.bodies]
     eccentricity, warnings = None, []
-    if "cage" in names:
-        cage = names.index("cage")
+    if scene.topology.has("cage"):
+        cage = scene.topology.body("cage")
         eccentricity = float(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1]).max())
         if eccentricity > geometry.roller_diameter / 2:
             warnings.append(f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller "

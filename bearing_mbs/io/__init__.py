@@ -1,0 +1,1 @@
+"""Input and output: JSON and figure files."""
