@@ -8,11 +8,11 @@ the numpy twin and the compiled kernel share this source.
 ``v_reg`` (``regularisation_speed`` [m/s]) sets where each law saturates. Their slopes at zero slip,
 :math:`\varphi'(0)\,v_{reg}` in :data:`ZERO_SLIP_SLOPE`, differ; the slope matters because
 :math:`\mu F_N \varphi'(0)` is a viscous coefficient that limits explicit time steps
-(``ARCHITECTURE.md``: :math:`h \lesssim 2 m v_{reg}/(\mu Q)`).
+(:math:`h \lesssim 2 m v_{reg}/(\mu Q)`, docs/numerics.md).
 
 References
 ----------
-* Primary document (``SEED_000_DIGEST.md``), annex II: :math:`F_R = \mu F_N\,\mathrm{erf}(2v/\Delta v)`, and
+* Primary document (the 2019 UPV/EHU thesis, docs/bearing.md), annex II: :math:`F_R = \mu F_N\,\mathrm{erf}(2v/\Delta v)`, and
   the dead-zone rule :math:`F_R = \mu F_N\,\mathrm{sign}(v)` for :math:`|v| \ge \Delta v`, else 0 (eq. 23).
 * Exudyn ``ObjectContactSphereSphere``: friction proportional to slip up to ``frictionProportionalZone``,
   then Coulomb (our ``linear`` law).

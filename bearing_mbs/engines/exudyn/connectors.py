@@ -1,7 +1,7 @@
 """The three ways contact forces reach Exudyn (``[solver.exudyn] connector``).
 
 * ``compiled`` — one ``ObjectGenericODE2`` over all body nodes whose force user function calls the numba
-  kernel (:func:`bearing_mbs.elements.scene_forces`). Measured fastest (EXUDYN_NOTES.md §B).
+  kernel (:func:`bearing_mbs.elements.scene_forces`). Measured fastest (docs/engines.md).
 * ``python`` — the same object calling the numpy twin (:func:`bearing_mbs.elements.scene_forces_twin`).
 * ``native`` — Exudyn's own C++ ``ObjectContactSphereSphere`` per pair, for the normal force only. Its
   Hunt–Crossley model has damping factor 3(1 − e_HC)/2, so ``e_HC = 1 − 2d/3`` reproduces any law of the

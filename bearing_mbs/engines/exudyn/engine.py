@@ -6,7 +6,7 @@
 * contacts, loads and drives: see :mod:`.exudyn_connectors`;
 * distance constraints: ``ObjectConnectorDistance``; point-on-line constraints (the constraint cage):
   ``ObjectJointPrismatic2D`` with ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers
-  reject joints, EXUDYN_NOTES.md §1, §5);
+  reject joints: measured with Exudyn 1.13.6, see docs/engines.md);
 * per-pair state (latched approach speeds), events, output, the energy audit (trapezoid rule over accepted
   steps) and run guards: a ``PostStepUserFunction``, once per accepted step, calling the same compiled
   :func:`bearing_mbs.contact.state.advance_pair_state` as the reference engine.
@@ -181,7 +181,7 @@ def _simulation_settings(exu, settings, end_time):
     ti.verboseMode = 0
     ti.endTime = end_time
     ti.numberOfSteps = max(1, math.ceil(end_time / settings.step * (1 - 1e-12)))
-    ti.discontinuous.useRecommendedStepSize = False  # EXUDYN_NOTES.md §2f
+    ti.discontinuous.useRecommendedStepSize = False  # else contacts shrink the step to 1e-8 s (docs/engines.md)
     ti.explicit.computeEndOfStepAccelerations = False  # saves one force evaluation per step
     # Implicit solvers halve the step where Newton fails (stick-slip transitions, contact onsets) and recover;
     # on smooth problems the step stays the requested one.

@@ -100,7 +100,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
         engine="reference", method=settings.method, step=settings.step, time=out_t, position=out_q,
         velocity=out_v, pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events,
         body_names=tuple(b.name for b in scene.bodies), pair_names=tuple(p.name for p in scene.pairs),
-        stats=stats, failure=Failure(status), message=message, spec=spec,
+        stats=stats, failure=Failure(status), message=message, spec=spec, topology=scene.topology,
     )
 
 
