@@ -55,7 +55,8 @@ def pack(springs) -> SpringArrays:
 
 
 @numba.njit
-def add_forces(springs, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    springs = parameters
     for j in range(springs.body_a.size):
         a, b = springs.body_a[j], springs.body_b[j]
         dx, dy = q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1]

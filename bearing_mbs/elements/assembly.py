@@ -2,8 +2,8 @@
 
 :func:`pack_scene` packs the contact pairs and every force-element kind present in the scene (registry order)
 into :class:`PackedScene`. :func:`scene_forces` (compiled) and :func:`scene_forces_twin` (numpy) add the forces
-of every kind; in compiled code each kind's parameters have their own type, and the call to each kind's
-registered compiled function is laid out when numba types the scene's tuple of kinds. Gravity and constraint forces are the engines' business.
+of every kind; in compiled code each kind's parameters have their own type, and numba resolves, inlines and
+orders the calls to each kind's registered compiled function when it types the scene's tuple of kinds. Gravity and constraint forces are the engines' business.
 """
 
 from __future__ import annotations
@@ -88,26 +88,38 @@ def scene_counts(scene: Scene) -> dict:
     return counts
 
 
+def add_kind_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    """Add the forces of one kind: its numpy twin here; in compiled code, its registered compiled function,
+    inlined (the overload below)."""
+    FORCE_ELEMENTS.of_parameters(type(parameters)).add_forces_twin(
+        parameters, t, q, v, latched, forces, pair_out, power, complete)
+
+
+@overload(add_kind_forces, inline="always")
+def _add_kind_forces_compiled(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    return FORCE_ELEMENTS.of_parameters(parameters.instance_class).add_forces.py_func
+
+
 def add_element_forces(elements, t, q, v, latched, forces, pair_out, power, complete):
-    """Add the forces of every kind in ``elements`` (the numpy twins here; compiled code uses the registered
-    compiled functions, see the overload below)."""
+    """Add the forces of every kind in the tuple ``elements``, in order."""
     for parameters in elements:
-        FORCE_ELEMENTS.of_parameters(type(parameters)).add_forces_twin(
-            parameters, t, q, v, latched, forces, pair_out, power, complete)
+        add_kind_forces(parameters, t, q, v, latched, forces, pair_out, power, complete)
 
 
-@overload(add_element_forces)
+@overload(add_element_forces, inline="always")
 def _add_element_forces_compiled(elements, t, q, v, latched, forces, pair_out, power, complete):
-    """Compiled form: one call per kind, with constant tuple indices (a heterogeneous tuple cannot be iterated
-    in compiled code). The body is generated for the tuple's length when numba types the call, and each call
-    goes to the compiled function registered for that position's parameter type."""
-    compiled = [FORCE_ELEMENTS.of_parameters(kind.instance_class).add_forces for kind in elements.types]
-    arguments = "t, q, v, latched, forces, pair_out, power, complete"
-    calls = [f"    add_{i}(elements[{i}], {arguments})" for i in range(len(compiled))] or ["    pass"]
-    source = "\n".join([f"def add_all(elements, {arguments}):", *calls])
-    namespace = {f"add_{i}": function for i, function in enumerate(compiled)}
-    exec(source, namespace)
-    return namespace["add_all"]
+    """Compiled form. A tuple of different kinds cannot be iterated in compiled code, so the first kind is added
+    and the rest of the tuple (a shorter tuple type) recurses, until it is empty; every level is inlined."""
+    return _add_first_then_rest if len(elements) else _add_nothing
+
+
+def _add_first_then_rest(elements, t, q, v, latched, forces, pair_out, power, complete):
+    add_kind_forces(elements[0], t, q, v, latched, forces, pair_out, power, complete)
+    add_element_forces(elements[1:], t, q, v, latched, forces, pair_out, power, complete)
+
+
+def _add_nothing(elements, t, q, v, latched, forces, pair_out, power, complete):
+    pass
 
 
 @numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting

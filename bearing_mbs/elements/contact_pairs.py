@@ -76,18 +76,20 @@ def pack(pairs) -> PairArrays:
 
 
 @numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
-def add_forces(pairs, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
     """Forces of all pairs. ``complete=False`` (inside integration stages) skips the velocity-level outputs of
     pairs apart, which no force needs (about a third of the evaluation for a bearing, where most pocket and
     upper raceway pairs are apart): their gap rate, slip and rolling speed are left 0."""
+    pairs = parameters
     cos_theta, sin_theta = body_trigonometry(q)
+    dissipated = 0.0  # a local sum: updating power[1] in the loop would keep it in memory, ~10 ns a pair
     for k in range(pairs.kind.size):
         a, b, kind = pairs.body_a[k], pairs.body_b[k], pairs.kind[k]
         ra, rb = pairs.radius_a[k], pairs.radius_b[k]
         gap, nx, ny, px, py = pair_position(
             kind, a, b, pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0], pairs.direction[k, 1],
             ra, rb, q, cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
-        gap_rate = slip = spin = rolling = 0.0
+        gap_rate = slip = spin = rolling = cx = cy = 0.0  # all defined on every path, as inlining needs
         if complete or gap < 0.0:
             gap_rate, slip, cx, cy, spin, rolling = pair_motion(kind, a, b, ra, rb, gap, nx, ny, px, py, q, v)
         fn = ft = moment = loss = 0.0
@@ -118,7 +120,8 @@ def add_forces(pairs, t, q, v, latched, forces, pair_out, power, complete):
         pair_out[k, 5] = moment
         pair_out[k, 6] = loss
         pair_out[k, 7] = rolling
-        power[1] += loss
+        dissipated += loss
+    power[1] += dissipated
 
 
 def add_forces_twin(pairs, t, q, v, latched, forces, pair_out, power, complete):

@@ -35,7 +35,8 @@ def pack(drags) -> DragArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(drags, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    drags = parameters
     for j in range(drags.body.size):
         i = 3 * drags.body[j]
         linear, angular = drags.linear[j], drags.angular[j]

@@ -39,7 +39,8 @@ def pack(loads) -> LoadArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(loads, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    loads = parameters
     for j in range(loads.body.size):
         scale = profile_value(loads.profile_times, loads.profile_values, loads.profile[j, 0], loads.profile[j, 1], t)
         for c in range(3):

@@ -39,7 +39,8 @@ def pack(servos) -> ServoArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(servos, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    servos = parameters
     for j in range(servos.body.size):
         speed = profile_value(servos.profile_times, servos.profile_values, servos.profile[j, 0],
                               servos.profile[j, 1], t)

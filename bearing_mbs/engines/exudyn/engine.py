@@ -37,7 +37,7 @@ from bearing_mbs.engines.exudyn.connectors import (
     check_native,
     without_pairs,
 )
-from bearing_mbs.engines.reference.engine import diverged_message, output_grid, penetration_message
+from bearing_mbs.engines.diagnosis import diverged_message, output_grid, penetration_message
 from bearing_mbs.elements import pack_scene, scene_forces
 
 

@@ -1,0 +1,141 @@
+"""State bundles of the compiled reference engine: small NamedTuples of arrays that numba passes by value.
+
+Every array is updated in place, so a bundle made once in Python carries its contents from one call of the
+driver (one chunk of output instants) to the next.
+
+* :class:`State` — what is integrated: positions q [m, m, rad per body], velocities v [m/s, m/s, rad/s],
+  the pairs' latched approach speeds [m/s], the event log and the cumulative work [J];
+* :class:`Controls` — the run's step, tolerance and guards;
+* :class:`RungeKuttaTableau` — a Butcher tableau as arrays (:mod:`bearing_mbs.engines.reference.tableaus`);
+* :class:`VerletCarry`, :class:`RungeKuttaStages` — each method's memory between steps;
+* :class:`Workspace` — scratch arrays of one step;
+* :class:`Output` — the output instants, the buffers of decimated output and the run counters.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from bearing_mbs.engines.reference.tableaus import ButcherTableau
+
+
+class State(NamedTuple):
+    """The integrated state: q, v (3 per body), latched approach speeds [m/s] and event log of the pairs,
+    cumulative (supplied, dissipated) work [J]."""
+
+    q: np.ndarray
+    v: np.ndarray
+    latched: np.ndarray
+    events: np.ndarray
+    work: np.ndarray
+
+
+class Controls(NamedTuple):
+    """step [s]: the fixed step, or the first and largest adaptive step. contact_step [s]: the central
+    difference's step while a pair penetrates (0: none). tolerance: relative and absolute tolerance of the
+    adaptive step. speed_limit [m/s] and penetration_bound (per pair) [m]: the run guards."""
+
+    step: float
+    contact_step: float
+    tolerance: float
+    speed_limit: float
+    penetration_bound: np.ndarray
+
+
+class RungeKuttaTableau(NamedTuple):
+    """An explicit Runge–Kutta method as arrays: stage coefficients a (s × s), weights b, nodes c, embedded
+    weights b_error (empty: fixed step), the order of the error estimate and the FSAL property."""
+
+    a: np.ndarray
+    b: np.ndarray
+    c: np.ndarray
+    b_error: np.ndarray
+    error_order: int
+    fsal: bool
+
+
+#: The tableau argument of the methods that have none.
+NO_TABLEAU = RungeKuttaTableau(np.zeros((0, 0)), np.zeros(0), np.zeros(0), np.zeros(0), 0, False)
+
+
+def runge_kutta_tableau(tableau: ButcherTableau | None) -> RungeKuttaTableau:
+    """The compiled form of ``tableau`` (:data:`NO_TABLEAU` for None)."""
+    if tableau is None:
+        return NO_TABLEAU
+    return RungeKuttaTableau(tableau.a, tableau.b, tableau.c, tableau.b_error, tableau.error_order, tableau.fsal)
+
+
+class VerletCarry(NamedTuple):
+    """Velocity Verlet's memory: the last acceleration a(q, v) and (supplied, dissipated) power [W];
+    ``ready[0] == 1`` when they belong to the current state."""
+
+    acceleration: np.ndarray
+    power: np.ndarray
+    ready: np.ndarray
+
+
+class RungeKuttaStages(NamedTuple):
+    """The stages k_i of an explicit Runge–Kutta step, one row per stage: velocities (dq/dt), accelerations
+    (dv/dt) and (supplied, dissipated) power [W]."""
+
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    power: np.ndarray
+
+
+class Workspace(NamedTuple):
+    """Scratch of one step: the candidate state (q_new, v_new), a stage state, an acceleration, the
+    generalized forces, the pairs' outputs and the constraint forces [N]."""
+
+    q_new: np.ndarray
+    v_new: np.ndarray
+    stage_q: np.ndarray
+    stage_v: np.ndarray
+    acceleration: np.ndarray
+    forces: np.ndarray
+    pair_out: np.ndarray
+    constraint_forces: np.ndarray
+
+
+class Output(NamedTuple):
+    """Output instants ``times`` [s] and one row per instant of t, q, v, pair outputs, work and constraint
+    forces; ``counters``: accepted steps, rejected steps, force evaluations (slots in
+    :mod:`bearing_mbs.engines.reference.codes`)."""
+
+    times: np.ndarray
+    t: np.ndarray
+    q: np.ndarray
+    v: np.ndarray
+    pairs: np.ndarray
+    work: np.ndarray
+    constraints: np.ndarray
+    counters: np.ndarray
+
+
+def new_output(times: np.ndarray, coordinate_count: int, pair_count: int, pair_outputs: int,
+               constraint_count: int) -> Output:
+    """Output buffers for ``times``, filled with NaN (rows a stopped run never reached stay NaN)."""
+    size = times.size
+    return Output(times, np.full(size, np.nan), np.full((size, coordinate_count), np.nan),
+                  np.full((size, coordinate_count), np.nan), np.full((size, pair_count, pair_outputs), np.nan),
+                  np.full((size, 2), np.nan), np.full((size, constraint_count), np.nan),
+                  np.zeros(3, dtype=np.int64))
+
+
+def new_workspace(coordinate_count: int, pair_count: int, pair_outputs: int, constraint_count: int) -> Workspace:
+    n = coordinate_count
+    return Workspace(np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n),
+                     np.empty((pair_count, pair_outputs)), np.empty(constraint_count))
+
+
+def new_verlet_carry(coordinate_count: int) -> VerletCarry:
+    return VerletCarry(np.zeros(coordinate_count), np.zeros(2), np.zeros(1, dtype=np.int64))
+
+
+def new_runge_kutta_stages(stage_count: int, coordinate_count: int) -> RungeKuttaStages:
+    """Stage arrays for ``stage_count`` stages (at least one row, so every method has the same types)."""
+    rows = max(stage_count, 1)
+    return RungeKuttaStages(np.zeros((rows, coordinate_count)), np.zeros((rows, coordinate_count)),
+                            np.zeros((rows, 2)))

@@ -1,0 +1,25 @@
+r"""The right-hand side of the equations of motion, the one place the compiled engine evaluates forces.
+
+:math:`a = M^{-1} f(t, q, v) + g`, made consistent with the constraints (index-1 form, see
+:mod:`bearing_mbs.engines.reference.constraints`).
+"""
+
+from __future__ import annotations
+
+import numba
+
+from bearing_mbs.elements import scene_forces
+from bearing_mbs.engines.reference.constraints import add_constraint_accelerations
+
+
+@numba.njit(cache=True, inline="always")
+def accelerations(packed, t, q, v, latched, a, forces, pair_out, constraint_forces, complete=False):
+    """a = M⁻¹ f(t, q, v) + gravity [m/s², rad/s²], made consistent with the constraints (their forces [N]
+    into ``constraint_forces``). Returns (supplied, dissipated) power [W]. ``complete``: also the
+    velocity-level outputs of pairs apart (output instants only; see :func:`bearing_mbs.elements.scene_forces`)."""
+    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, pair_out, complete)
+    for i in range(q.size):
+        a[i] = packed.inverse_mass[i] * forces[i] + packed.gravity[i]
+    if packed.constraints.kind.size > 0:
+        constraint_forces[:] = add_constraint_accelerations(packed.constraints, packed.inverse_mass, q, v, a)
+    return supplied, dissipated
