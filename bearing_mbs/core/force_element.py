@@ -18,6 +18,10 @@ The contract of the evaluation functions (compiled and numpy twin alike)::
   the contact-pair kind only (other kinds ignore them);
 * ``complete`` — False inside integration stages: a kind may skip outputs that no force needs.
 
+The compiled function is inlined into the integrators, so its arguments must carry exactly these names, and
+every local variable must be assigned on every path before it is read (numba's inliner refuses a variable
+that may be undefined).
+
 Body index −1 is the ground. All quantities are SI.
 """
 
