@@ -28,7 +28,9 @@ class Model:
     * ``metrics(spec, scene, result) -> dict`` — summary entries (JSON-safe numbers, lists and text);
     * ``figures(spec, scene, result, directory) -> list[Path]`` — PNG files;
     * ``prepare(data) -> data`` — fills model-specific defaults into the raw mapping before validation
-      (a preset, say); optional.
+      (a preset, say); optional;
+    * ``linearise(scene)`` — operating point and modes for the step advisor, ``None`` for a scene it does not
+      model; optional.
     """
 
     name: str
@@ -37,6 +39,7 @@ class Model:
     metrics: Callable[[Any, Scene, Result], dict]
     figures: Callable[[Any, Scene, Result, Path], list]
     prepare: Callable[[dict], dict] = field(default=lambda data: data)
+    linearise: Callable[[Scene], Any] | None = None
 
 
 class ModelRegistry(Mapping):

@@ -26,7 +26,13 @@ from bearing_mbs.contact.line_contact import (
     effective_modulus,
     palmgren_stiffness,
 )
-from bearing_mbs.models.cylindrical_roller.drivetrain import GearTrain
+from bearing_mbs.models.cylindrical_roller.drivetrain import (
+    RPM,
+    GearTrain,
+    highest_speed_rpm,
+    initial_speed,
+    speed_profile,
+)
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.lubrication import palmgren_drag_moment, roller_drag_coefficient
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, PointOnLineConstraint, Profile, Scene
@@ -35,7 +41,6 @@ from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.models.building import initial_gaps, pair_law
 
-RPM = 2 * math.pi / 60
 #: The primary document's raceway laws K δ^1.3 (annex II: KI, KE, NI = NE).
 DOCUMENT_STIFFNESS = {"inner_race": 3e10, "outer_race": 4e10}
 DOCUMENT_EXPONENT = 1.3
@@ -50,7 +55,7 @@ def build_bearing_scene(spec: Spec) -> Scene:
     drive = spec.drive
     train = GearTrain(drive.gear_train) if drive.kind == "gear_train" else None
 
-    inner_speed = initial_inner_speed(spec)
+    inner_speed = initial_speed(drive)
     rolling = drive.initial_state == "rolling"
     cage_speed = geometry.epicyclic_cage_speed(inner_speed) if rolling else 0.0
     spin = geometry.epicyclic_roller_spin(inner_speed) if rolling else 0.0
@@ -113,7 +118,7 @@ def build_bearing_scene(spec: Spec) -> Scene:
         loads.append(Load("mesh_load_y", INNER_RING, (0.0, 1.0, 0.0), Profile((0.0, end), (fy0, fy1))))
     else:
         gain = ring_inertia / drive.servo_time_constant
-        drives.append(VelocityServo("speed_servo", INNER_RING, gain, speed_profile(spec)))
+        drives.append(VelocityServo("speed_servo", INNER_RING, gain, speed_profile(drive)))
 
     drags = tuple(Drag(f"roller{k}-drag", first_roller + k, coefficient) for k in range(geometry.rollers)
                   if (coefficient := roller_drag(spec, geometry)) > 0)
@@ -132,7 +137,7 @@ def build_bearing_scene(spec: Spec) -> Scene:
 def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
     """Viscous drag coefficient [N s/m] on each roller centre from ``[lubricant]`` (0 without drag)."""
     lubricant = spec.lubricant
-    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec)
+    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec.drive)
     if lubricant.model == "none" or not reference_rpm:
         return 0.0
     moment = lubricant.drag_moment
@@ -140,37 +145,6 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
         moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.viscosity, reference_rpm, geometry.pitch_diameter)
     return roller_drag_coefficient(moment, geometry.rollers, geometry.pitch_diameter,
                                    geometry.epicyclic_cage_speed(reference_rpm * RPM))
-
-
-def highest_speed_rpm(spec: Spec) -> float:
-    """The drive's highest speed [rpm]: the operating speed of a ramp or table (start-up, stop)."""
-    drive = spec.drive
-    if drive.kind == "speed" and drive.profile == "ramp":
-        return max(abs(drive.from_rpm), abs(drive.speed_rpm))
-    if drive.kind == "speed" and drive.profile == "table":
-        return max(abs(s) for s in drive.speeds_rpm)
-    return abs(drive.speed_rpm)
-
-
-def initial_inner_speed(spec: Spec) -> float:
-    """Inner-ring speed at t = 0 [rad/s]."""
-    drive = spec.drive
-    if drive.kind == "gear_train" or drive.profile == "constant":
-        return drive.speed_rpm * RPM
-    if drive.profile == "ramp":
-        return drive.from_rpm * RPM
-    return float(np.interp(0.0, drive.times, drive.speeds_rpm)) * RPM
-
-
-def speed_profile(spec: Spec) -> Profile:
-    """The servo's target speed [rad/s] against time."""
-    drive = spec.drive
-    if drive.profile == "constant":
-        return Profile.constant(drive.speed_rpm * RPM)
-    if drive.profile == "ramp":
-        end = drive.start + drive.duration
-        return Profile((0.0, drive.start, end), (drive.from_rpm * RPM, drive.from_rpm * RPM, drive.speed_rpm * RPM))
-    return Profile(tuple(drive.times), tuple(s * RPM for s in drive.speeds_rpm))
 
 
 def load_profile(spec: Spec) -> Profile:

@@ -1,4 +1,16 @@
-r"""The primary document's two-shaft gear train (digest, eqs. 40–44), with the sign of α1 derived.
+r"""The drive of the inner ring: its set speed (one definition, :func:`speed_schedule_rpm`) and the primary
+document's two-shaft gear train (eqs. 40–44), with the sign of α1 derived.
+
+Set speed
+---------
+``[drive]`` gives the inner ring's set speed in rpm as breakpoints, linear in between and constant outside
+(:func:`speed_schedule_rpm`). Everything else reads it from there: the servo's target (:func:`speed_profile`), the
+initial speed (:func:`initial_speed`), the steady speed the quasi-static solver uses (:func:`steady_speed`) and the
+highest speed, the lubricant's reference (:func:`highest_speed_rpm`). With a gear train the schedule is the
+initial speed alone (the train sets the speed after that).
+
+Gear train
+----------
 
 Shaft 1 (the fast shaft: the bearing's inner ring, pinion radius :math:`r_1`, inertia :math:`I_1`) meshes with
 shaft 2 (gear radius :math:`r_2`, inertia :math:`I_2`). The generator resists on shaft 1 with
@@ -31,7 +43,50 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from bearing_mbs.models.cylindrical_roller.spec import GearTrainSpec
+import numpy as np
+
+from bearing_mbs.core.scene import Profile
+from bearing_mbs.models.cylindrical_roller.spec import DriveSpec, GearTrainSpec
+
+#: One revolution per minute [rad/s].
+RPM = 2 * math.pi / 60
+
+
+def speed_schedule_rpm(drive: DriveSpec) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The inner ring's set speed as breakpoints: (times [s], speeds [rpm]).
+
+    ``constant`` (and a gear train): one point, ``speed_rpm``; ``ramp``: ``from_rpm`` until ``start``, then
+    linear to ``speed_rpm`` at ``start + duration``; ``table``: its entries.
+    """
+    if drive.kind == "gear_train" or drive.profile == "constant":
+        return (0.0,), (drive.speed_rpm,)
+    if drive.profile == "ramp":
+        return (0.0, drive.start, drive.start + drive.duration), (drive.from_rpm, drive.from_rpm, drive.speed_rpm)
+    return tuple(drive.times), tuple(drive.speeds_rpm)
+
+
+def speed_profile(drive: DriveSpec) -> Profile:
+    """The servo's target speed [rad/s] against time [s]."""
+    times, speeds = speed_schedule_rpm(drive)
+    return Profile(times, tuple(s * RPM for s in speeds))
+
+
+def initial_speed(drive: DriveSpec) -> float:
+    """The inner ring's speed at t = 0 [rad/s] (a ramp starts from ``from_rpm``, even one of no duration)."""
+    times, speeds = speed_schedule_rpm(drive)
+    if drive.kind == "speed" and drive.profile == "table":
+        return float(np.interp(0.0, times, speeds)) * RPM
+    return speeds[0] * RPM
+
+
+def steady_speed(drive: DriveSpec) -> float:
+    """The speed the drive settles at [rad/s]: the last breakpoint (the end of a ramp, a table's last entry)."""
+    return speed_schedule_rpm(drive)[1][-1] * RPM
+
+
+def highest_speed_rpm(drive: DriveSpec) -> float:
+    """The drive's highest |speed| [rpm]: the operating speed of a ramp or table (start-up, stop)."""
+    return max(abs(s) for s in speed_schedule_rpm(drive)[1])
 
 
 @dataclass(frozen=True)

@@ -1,6 +1,6 @@
 r"""Derived bearing geometry, masses, inertias and epicyclic kinematics (one place for these formulas).
 
-Conventions (also those of :mod:`bearing_mbs.quasistatic`): the inner raceway diameter is
+Conventions (also those of :mod:`bearing_mbs.models.cylindrical_roller.quasistatic`): the inner raceway diameter is
 :math:`d_i = D_{pw} - D_w - P_d/2` and the outer :math:`d_o = D_{pw} + D_w + P_d/2`, so :math:`D_{pw}` is their
 mean and :math:`P_d` the diametral clearance (negative: preload). Roller k sits at azimuth
 :math:`\psi_k = 2\pi k/Z` (the document's :math:`2\pi(k-1)/Z`, counted from 0).
@@ -16,7 +16,9 @@ bars wrap the roller on both sides of the pitch circle, so we add the mirror edg
 :math:`2D_{pw} - D_c` inside it (same construction), and the pocket holds its roller from both sides.
 
 Epicyclic (no-slip) kinematics with the outer ring fixed: cage speed
-:math:`\omega_c = \omega_i (1 - D_w/D_{pw})/2`, roller spin (absolute) :math:`\omega_r = -\omega_c D_{pw}/D_w`.
+:math:`\omega_c = \omega_i (1 - D_w/D_{pw})/2`, roller spin (absolute) :math:`\omega_r = -\omega_c D_{pw}/D_w`; each
+roller orbiting at :math:`\omega_c` feels the centrifugal force :math:`F_c = m_r (D_{pw}/2)\,\omega_c^2` (T. A. Harris,
+M. N. Kotzalas, Essential Concepts of Bearing Technology, 5th ed., 2006, ch. 10).
 """
 
 from __future__ import annotations
@@ -26,7 +28,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearing_mbs.models.cylindrical_roller.spec import BearingSpec
+from bearing_mbs.models.cylindrical_roller.spec import (
+    BearingSpec,
+    inner_race_diameter,
+    outer_race_diameter,
+    pocket_angle_cosine,
+)
 
 
 @dataclass(frozen=True)
@@ -59,12 +66,12 @@ class BearingGeometry:
         z, d_w, length = spec.rollers, spec.roller_diameter, spec.roller_length
         pitch, clearance = spec.pitch, spec.clearance
         d_c, h, t = spec.cage_diameter, spec.pocket_clearance, spec.cage_thickness
-        roller_mass = spec.roller_material.density * math.pi * d_w**2 * length / 4
+        mass = roller_mass(spec.roller_material.density, d_w, length)
         # the cage: an annulus of thickness t and width w around D_c, less Z pocket windows (D_w + 2H) × L_w
         cage_volume = math.pi * d_c * t * spec.cage_width - z * (d_w + 2 * h) * length * t
         cage_mass = spec.cage_material.density * cage_volume
         r_out, r_in = (d_c + t) / 2, (d_c - t) / 2
-        inner_race = pitch - d_w - clearance / 2
+        inner_race = inner_race_diameter(pitch, d_w, clearance)
         ring_mass = spec.ring_material.density * math.pi * (inner_race**2 - spec.inner_ring_bore**2) / 4 * spec.ring_width
         land = spec.land_clearance or 0.0
         return cls(
@@ -74,12 +81,12 @@ class BearingGeometry:
             pitch_diameter=pitch,
             clearance=clearance,
             inner_race_diameter=inner_race,
-            outer_race_diameter=pitch + d_w + clearance / 2,
+            outer_race_diameter=outer_race_diameter(pitch, d_w, clearance),
             cage_diameter=d_c,
             pocket_clearance=h,
             pocket_angle=pocket_angle(pitch, d_c, d_w, h),
-            roller_mass=roller_mass,
-            roller_inertia=roller_mass * d_w**2 / 8,
+            roller_mass=mass,
+            roller_inertia=mass * d_w**2 / 8,
             cage_mass=cage_mass,
             cage_inertia=cage_mass * (r_out**2 + r_in**2) / 2,
             inner_ring_mass=ring_mass + spec.supported_mass,
@@ -119,13 +126,10 @@ class BearingGeometry:
                                           diameter / 2 * math.sin(psi + sign * angle))
         return points
 
-    def roller_set(self):
-        """The same bearing for the quasi-static solver (Palmgren raceway laws)."""
-        from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet
 
-        return RollerSet(rollers=self.rollers, pitch_diameter=self.pitch_diameter,
-                         roller_diameter=self.roller_diameter, roller_length=self.roller_length,
-                         diametral_clearance=self.clearance, roller_mass=self.roller_mass)
+def roller_mass(density: float, roller_diameter: float, roller_length: float) -> float:
+    """m_r = ρ π D_w² L_w / 4 [kg]: a solid cylinder of density [kg/m³], diameter and length [m]."""
+    return density * math.pi * roller_diameter**2 * roller_length / 4
 
 
 def epicyclic_cage_speed(inner_speed, roller_diameter, pitch_diameter):
@@ -133,8 +137,11 @@ def epicyclic_cage_speed(inner_speed, roller_diameter, pitch_diameter):
     return inner_speed * (1 - roller_diameter / pitch_diameter) / 2
 
 
+def roller_centrifugal_force(roller_mass, pitch_diameter, orbit_speed):
+    """F_c = m_r (D_pw/2) ω_c² [N] of a roller of mass [kg] orbiting on the pitch circle [m] at ω_c [rad/s]."""
+    return roller_mass * 0.5 * pitch_diameter * orbit_speed**2
+
+
 def pocket_angle(pitch_diameter: float, cage_diameter: float, roller_diameter: float, pocket_clearance: float):
     """γ [rad] of document eq. 45 (denominator corrected)."""
-    cosine = ((pitch_diameter / 2) ** 2 + (cage_diameter / 2) ** 2 - (roller_diameter / 2 + pocket_clearance) ** 2) / (
-        pitch_diameter * cage_diameter / 2)
-    return math.acos(cosine)
+    return math.acos(pocket_angle_cosine(pitch_diameter, cage_diameter, roller_diameter, pocket_clearance))

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from bearing_mbs.contact.line_contact import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
 from bearing_mbs.spec import ContactSpec, Spec
 from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, one_of, positive, require
 from bearing_mbs.spec.loading import to_mapping
@@ -19,6 +20,11 @@ CAGE_GUIDANCE = ("rollers", "inner_land", "outer_land")
 SPEED_PROFILES = ("constant", "ramp", "table")
 DRIVE_KINDS = ("speed", "gear_train")
 LOAD_PROFILES = ("constant", "step", "ramp", "table")
+#: Largest diametral clearance: P_d <= CLEARANCE_LIMIT · D_w [-].
+CLEARANCE_LIMIT = 5e-2
+#: Largest preload: −P_d <= PRELOAD_LIMIT · D_w [-]; it keeps the per-contact approach below 1e-3 D_w, beyond the
+#: range where Palmgren's fit and rigid-ring quasi-statics are meant to be used.
+PRELOAD_LIMIT = 2e-3
 
 
 @dataclass(frozen=True)
@@ -35,8 +41,9 @@ class MaterialSpec:
         positive("density", self.density)
 
 
-#: Bearing steel (100Cr6; density as the primary document) and the document's bronze cage.
-STEEL = MaterialSpec(youngs_modulus=208e9, poisson_ratio=0.3, density=7850.0)
+#: Bearing steel (100Cr6: the elastic constants of Palmgren's fit; density as the primary document) and the
+#: document's bronze cage.
+STEEL = MaterialSpec(youngs_modulus=STEEL_YOUNGS_MODULUS, poisson_ratio=STEEL_POISSON_RATIO, density=7850.0)
 BRONZE = MaterialSpec(youngs_modulus=110e9, poisson_ratio=0.34, density=8890.0)
 
 
@@ -114,29 +121,62 @@ class BearingSpec:
         """P_d [m], negative for preload."""
         if self.diametral_clearance is not None:
             return self.diametral_clearance
-        return self.outer_race_diameter - self.inner_race_diameter - 2 * self.roller_diameter
+        return diametral_clearance(self.inner_race_diameter, self.outer_race_diameter, self.roller_diameter)
 
     def _check_fit(self):
         d_w, pitch, clearance = self.roller_diameter, self.pitch, self.clearance
         raceway_field = "diametral_clearance" if self.diametral_clearance is not None else "outer_race_diameter"
         raceway_value = self.diametral_clearance if self.diametral_clearance is not None else self.outer_race_diameter
-        require(clearance <= 0.05 * d_w, raceway_field, raceway_value,
+        require(clearance <= CLEARANCE_LIMIT * d_w, raceway_field, raceway_value,
                 f"raceways inconsistent with the roller: the diametral clearance {clearance:.4g} m must be "
-                f"<= 5 % of the roller diameter ({0.05 * d_w:.4g} m)")
-        require(clearance >= -0.002 * d_w, raceway_field, raceway_value,
-                f"preload beyond a sane bound: the diametral interference {-clearance:.4g} m must be <= 0.2 % "
-                f"of the roller diameter ({0.002 * d_w:.4g} m)")
-        require(pitch - d_w - clearance / 2 > 0, raceway_field, raceway_value, "leaves no inner raceway")
-        chord = pitch * math.sin(math.pi / self.rollers)
-        require(d_w + 2 * self.pocket_clearance < chord, "rollers", self.rollers,
-                f"do not fit around the pitch circle: D_w + 2H = {d_w + 2 * self.pocket_clearance:.4g} m must be "
-                f"< the chord between neighbours D_pw sin(π/Z) = {chord:.4g} m")
+                f"<= {100 * CLEARANCE_LIMIT:g} % of the roller diameter ({CLEARANCE_LIMIT * d_w:.4g} m)")
+        require(clearance >= -PRELOAD_LIMIT * d_w, raceway_field, raceway_value,
+                f"preload beyond a sane bound: the diametral interference {-clearance:.4g} m must be "
+                f"<= {100 * PRELOAD_LIMIT:g} % of the roller diameter ({PRELOAD_LIMIT * d_w:.4g} m)")
+        require(inner_race_diameter(pitch, d_w, clearance) > 0, raceway_field, raceway_value, "leaves no inner raceway")
+        require_rollers_fit("rollers", self.rollers, self.rollers, pitch, d_w + 2 * self.pocket_clearance, "D_w + 2H")
         require(pitch - d_w < self.cage_diameter < pitch + d_w, "cage_diameter", self.cage_diameter,
                 f"must lie inside the rollers' span ({pitch - d_w:.4g}, {pitch + d_w:.4g}) m")
-        cosine = ((pitch / 2) ** 2 + (self.cage_diameter / 2) ** 2 - (d_w / 2 + self.pocket_clearance) ** 2) / (
-            pitch * self.cage_diameter / 2)
+        cosine = pocket_angle_cosine(pitch, self.cage_diameter, d_w, self.pocket_clearance)
         require(-1 < cosine < 1 and 2 * math.acos(cosine) < 2 * math.pi / self.rollers, "pocket_clearance",
                 self.pocket_clearance, "puts the pocket edges of neighbouring rollers past each other")
+
+
+def diametral_clearance(inner_race_diameter: float, outer_race_diameter: float, roller_diameter: float) -> float:
+    """P_d = d_o − d_i − 2 D_w [m] (negative: preload), from the raceway and roller diameters [m]."""
+    return outer_race_diameter - inner_race_diameter - 2 * roller_diameter
+
+
+def inner_race_diameter(pitch_diameter: float, roller_diameter: float, clearance: float) -> float:
+    """d_i = D_pw − D_w − P_d/2 [m]: the clearance split equally between the raceways."""
+    return pitch_diameter - roller_diameter - clearance / 2
+
+
+def outer_race_diameter(pitch_diameter: float, roller_diameter: float, clearance: float) -> float:
+    """d_o = D_pw + D_w + P_d/2 [m]."""
+    return pitch_diameter + roller_diameter + clearance / 2
+
+
+def neighbour_chord(pitch_diameter: float, rollers: int) -> float:
+    """D_pw sin(π/Z) [m]: the chord between neighbouring roller centres of Z rollers on the pitch circle D_pw [m]."""
+    return pitch_diameter * math.sin(math.pi / rollers)
+
+
+def require_rollers_fit(field: str, value, rollers: int, pitch_diameter: float, width: float, what: str) -> None:
+    """Z bodies of tangential ``width`` [m] (``what``: its symbol) fit around the pitch circle D_pw [m] without
+    overlapping: width < :func:`neighbour_chord`; else a :class:`SpecError` naming ``field`` and ``value``."""
+    chord = neighbour_chord(pitch_diameter, rollers)
+    require(width < chord, field, value,
+            f"{rollers} rollers do not fit around the pitch circle: {what} = {width:.6g} m must be < the chord "
+            f"between neighbours D_pw sin(π/Z) = {chord:.6g} m, or neighbours overlap")
+
+
+def pocket_angle_cosine(pitch_diameter: float, cage_diameter: float, roller_diameter: float,
+                        pocket_clearance: float) -> float:
+    r"""cos γ of the pocket edges on the cage circle D_c [m] (document eq. 45, the denominator corrected to
+    :math:`D_{pw} D_c/2`): a centred roller is exactly H [m] from each edge."""
+    return ((pitch_diameter / 2) ** 2 + (cage_diameter / 2) ** 2 - (roller_diameter / 2 + pocket_clearance) ** 2) / (
+        pitch_diameter * cage_diameter / 2)
 
 
 @dataclass(frozen=True)

@@ -1,18 +1,21 @@
 r"""The quasi-static solution of a bearing scenario: what ``bearing-mbs stiffness`` writes.
 
-A ``bearing`` scenario is turned into the inputs of :func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`:
+A ``bearing`` scenario is turned into the inputs of
+:func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`:
 
-* **rollers**: :meth:`bearing_mbs.models.cylindrical_roller.geometry.BearingGeometry.roller_set` (Palmgren raceway laws, the same
-  clearance and roller mass as the dynamic model). When the scenario's raceway laws are not Palmgren's
+* **rollers**: :meth:`bearing_mbs.models.cylindrical_roller.quasistatic.RollerSet.from_geometry` (Palmgren raceway
+  laws, the same clearance and roller mass as the dynamic model). When the scenario's raceway laws are not Palmgren's
   (``stiffness_model = "given"`` or ``"document"``, or non-steel materials), the rollers get the scenario's
   :math:`K, n` instead, and ``raceway_law`` in the summary says so.
 * **load**: ``[load] radial`` at ``[load] angle`` on the inner ring (for ``step`` and ``table`` profiles too:
   use ``--set load.radial=...`` for another level), plus the inner ring's weight
-  :math:`m_i g` along −y when ``[scenario] gravity`` > 0 (:math:`m_i` includes ``supported_mass``). The
+  :math:`m_i g` along −y when ``[scenario] gravity`` > 0 (:math:`m_i` includes ``supported_mass``):
+  :func:`carried_load`, the one place that adds the weight, for the step advisor's linearisation too. The
   rollers' and the cage's weights are left out: the rollers pass theirs to the outer ring (at most
   :math:`m_r g` ≈ 2 N per roller for the seed bearing) and a roller-guided cage hangs on the rollers.
-* **speed**: the drive's steady speed ``[drive] speed_rpm`` (the end of a ramp, the last entry of a table)
-  for the rollers' centrifugal force :math:`F_c = m_r (D_{pw}/2)\omega_c^2`; 0 gives none.
+* **speed**: the drive's steady speed (:func:`bearing_mbs.models.cylindrical_roller.drivetrain.steady_speed`:
+  ``[drive] speed_rpm``, the end of a ramp, the last entry of a table) for the rollers' centrifugal force
+  :math:`F_c = m_r (D_{pw}/2)\omega_c^2`; 0 gives none.
 * **roller phase**: roller 0 sits on the load line (``first_roller_angle`` = the load's direction), the
   configuration of the largest roller load that a turning bearing passes through.
 """
@@ -25,10 +28,13 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.io.json import write_json
+from bearing_mbs.models.cylindrical_roller.build import group_law
+from bearing_mbs.models.cylindrical_roller.drivetrain import RPM, steady_speed
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, plot_load_distribution, solve_radial
 from bearing_mbs.spec import Spec, SpecError
 
-RPM = 2 * math.pi / 60
 SUMMARY_FILE = "summary.json"
 FIGURE_FILE = "load_distribution.png"
 
@@ -38,17 +44,16 @@ def require_bearing(spec: Spec) -> None:
         raise SpecError("scenario.model", spec.scenario.model, "the quasi-static solver needs model = 'bearing'")
 
 
-def shaft_speed(spec: Spec) -> float:
-    """The drive's steady inner-ring speed [rad/s] (see the module docstring)."""
-    drive = spec.drive
-    if drive.kind == "speed" and drive.profile == "table":
-        return drive.speeds_rpm[-1] * RPM
-    return drive.speed_rpm * RPM
-
-
 def ring_weight(spec: Spec) -> float:
     """Weight of the inner ring and its supported mass [N], 0 without gravity."""
     return spec.scenario.gravity * BearingGeometry.from_spec(spec.bearing).inner_ring_mass
+
+
+def carried_load(applied, ring_mass: float, gravity) -> np.ndarray:
+    """(F_x, F_y) [N] the rollers carry: the ``applied`` load on the inner ring [N] (shape (2,) or a stack
+    (..., 2)) plus the weight ``ring_mass`` [kg] × ``gravity`` (g_x, g_y) [m/s²] of the ring and its supported
+    mass."""
+    return np.asarray(applied, dtype=float) + ring_mass * np.asarray(gravity, dtype=float)
 
 
 def quasi_static_load(spec: Spec, applied=None) -> np.ndarray:
@@ -56,17 +61,16 @@ def quasi_static_load(spec: Spec, applied=None) -> np.ndarray:
     if applied is None:
         angle = math.radians(spec.load.angle)
         applied = (spec.load.radial * math.cos(angle), spec.load.radial * math.sin(angle))
-    return np.asarray(applied, dtype=float) + np.array([0.0, -ring_weight(spec)])
+    ring_mass = BearingGeometry.from_spec(spec.bearing).inner_ring_mass
+    return carried_load(applied, ring_mass, (0.0, -spec.scenario.gravity))
 
 
 def quasi_static_rollers(spec: Spec, first_roller_angle: float = 0.0):
-    """The scenario's bearing as a :class:`bearing_mbs.models.cylindrical_roller.quasistatic.RollerSet`, and the raceway-law label
-    (``"palmgren"``, or ``"scenario"`` when the scenario's raceway laws replace Palmgren's)."""
-    from bearing_mbs.models.cylindrical_roller.build import group_law
-
+    """The scenario's bearing as a :class:`bearing_mbs.models.cylindrical_roller.quasistatic.RollerSet`, and the
+    raceway-law label (``"palmgren"``, or ``"scenario"`` when the scenario's raceway laws replace Palmgren's)."""
     require_bearing(spec)
     geometry = BearingGeometry.from_spec(spec.bearing)
-    rollers = replace(geometry.roller_set(), first_roller_angle=float(first_roller_angle))
+    rollers = replace(RollerSet.from_geometry(geometry), first_roller_angle=float(first_roller_angle))
     laws = {side: group_law(spec, geometry, f"{side}_race") for side in ("inner", "outer")}
     same = all(math.isclose(laws[side].stiffness, getattr(rollers, f"{side}_stiffness"), rel_tol=1e-12)
                and laws[side].exponent == getattr(rollers, f"{side}_exponent") for side in laws)
@@ -77,18 +81,17 @@ def quasi_static_rollers(spec: Spec, first_roller_angle: float = 0.0):
 
 
 def solve_scenario(spec: Spec, applied=None, *, speed: float | None = None, first_roller_angle: float | None = None):
-    """:func:`~bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial` for the scenario: returns the solution and the law label.
+    """:func:`~bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial` for the scenario: returns the solution
+    and the law label.
 
     ``applied``: (F_x, F_y) [N] instead of ``[load]``; ``speed`` [rad/s] instead of the drive's;
     ``first_roller_angle`` [rad] instead of the load line.
     """
-    from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
-
     load = quasi_static_load(spec, applied)
     if first_roller_angle is None:
         first_roller_angle = math.atan2(load[1], load[0]) if np.any(load) else 0.0
     rollers, law = quasi_static_rollers(spec, first_roller_angle)
-    return solve_radial(rollers, load, shaft_speed=shaft_speed(spec) if speed is None else speed), law
+    return solve_radial(rollers, load, shaft_speed=steady_speed(spec.drive) if speed is None else speed), law
 
 
 def stiffness_summary(spec: Spec, solution, law: str) -> dict:
@@ -124,9 +127,6 @@ def stiffness_summary(spec: Spec, solution, law: str) -> dict:
 
 def write_stiffness(spec: Spec, directory: str | Path, figures: bool = True) -> dict:
     """Solve the scenario quasi-statically; write ``summary.json`` and ``load_distribution.png`` to ``directory``."""
-    from bearing_mbs.models.cylindrical_roller.quasistatic import plot_load_distribution
-    from bearing_mbs.runner import write_json
-
     solution, law = solve_scenario(spec)
     summary = stiffness_summary(spec, solution, law)
     directory = Path(directory)

@@ -18,7 +18,8 @@ the x axis towards y. The outer ring is fixed; the load acts on the inner ring.
 
 Kinematics of the cage (outer ring fixed, zero contact angle, rolling without slip):
 :math:`\omega_c = \tfrac12\,\omega_i\,(1 - D_w/D_{pw})`, and each roller feels the centrifugal force
-:math:`F_c = m_r\,(D_{pw}/2)\,\omega_c^2` (Harris & Kotzalas 2006, ch. 10).
+:math:`F_c = m_r\,(D_{pw}/2)\,\omega_c^2` (Harris & Kotzalas 2006, ch. 10); both formulas live in
+:mod:`bearing_mbs.models.cylindrical_roller.geometry`.
 
 References
 ----------
@@ -28,20 +29,20 @@ References
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from bearing_mbs.contact.line_contact import PALMGREN_EXPONENT, palmgren_stiffness
+from bearing_mbs.models.cylindrical_roller.geometry import (
+    BearingGeometry,
+    epicyclic_cage_speed,
+    roller_centrifugal_force,
+    roller_mass,
+)
+from bearing_mbs.models.cylindrical_roller.spec import CLEARANCE_LIMIT, PRELOAD_LIMIT, STEEL, require_rollers_fit
 from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, positive, require
 
-#: Density of bearing steel [kg/m³], used for the roller mass when none is given (a solid cylinder).
-STEEL_DENSITY = 7850.0
-#: Largest preload: −P_d <= PRELOAD_LIMIT · D_w [-] (see :class:`RollerSet`).
-PRELOAD_LIMIT = 2e-3
-#: Largest clearance: P_d <= CLEARANCE_LIMIT · D_w [-].
-CLEARANCE_LIMIT = 5e-2
 #: Largest number of rollers accepted [-].
 MAX_ROLLERS = 1000
 
@@ -60,11 +61,10 @@ class RollerSet:
     do not overlap on the pitch circle (this implies :math:`Z D_w < \pi D_{pw}`).
     roller_length: effective contact length :math:`l` [m] > 0 (Palmgren's :math:`l`, ISO 281's
     :math:`L_{we}`); the sliced model cuts this length into slices.
-    diametral_clearance: :math:`P_d` [m], in :math:`[-0.002 D_w, 0.05 D_w]`; negative is a preload. The
-    preload limit keeps the per-contact approach below :math:`10^{-3}D_w`, beyond the range where
-    Palmgren's fit and rigid-ring quasi-statics are meant to be used.
+    diametral_clearance: :math:`P_d` [m], in :math:`[-0.002 D_w, 0.05 D_w]` (the limits of
+    :mod:`bearing_mbs.models.cylindrical_roller.spec`); negative is a preload.
     roller_mass: :math:`m_r` [kg] >= 0; None gives a solid steel cylinder
-    :math:`\rho\pi D_w^2 l/4` with :math:`\rho` = :data:`STEEL_DENSITY` (the primary document's formula).
+    :math:`\rho\pi D_w^2 l/4` with the density of ``STEEL`` (the primary document's formula).
     first_roller_angle: :math:`\psi_0` [rad], azimuth of roller 0 from the x axis.
     inner_stiffness, outer_stiffness: :math:`K` [N/m^n] > 0 of the roller–raceway laws
     :math:`Q = K\delta^n`; None gives Palmgren's :math:`K(l)` (then the exponent must be 10/9).
@@ -88,15 +88,8 @@ class RollerSet:
         positive("pitch_diameter", self.pitch_diameter)
         positive("roller_diameter", self.roller_diameter)
         positive("roller_length", self.roller_length)
-        largest = self.pitch_diameter * math.sin(math.pi / self.rollers)
-        require(
-            self.roller_diameter < largest,
-            "roller_diameter",
-            self.roller_diameter,
-            f"must be < D_pw·sin(π/Z) = {largest:.6g} m: {self.rollers} rollers of this diameter overlap on the "
-            f"pitch circle of diameter {self.pitch_diameter:g} m (Z·D_w = "
-            f"{self.rollers * self.roller_diameter:.6g} m, π·D_pw = {math.pi * self.pitch_diameter:.6g} m)",
-        )
+        require_rollers_fit("roller_diameter", self.roller_diameter, self.rollers, self.pitch_diameter,
+                            self.roller_diameter, "D_w")
         in_range(
             "diametral_clearance",
             self.diametral_clearance,
@@ -104,7 +97,7 @@ class RollerSet:
             CLEARANCE_LIMIT * self.roller_diameter,
         )
         if self.roller_mass is None:
-            mass = STEEL_DENSITY * math.pi * self.roller_diameter**2 * self.roller_length / 4.0
+            mass = roller_mass(STEEL.density, self.roller_diameter, self.roller_length)
             object.__setattr__(self, "roller_mass", mass)
         non_negative("roller_mass", self.roller_mass)
         finite("first_roller_angle", self.first_roller_angle)
@@ -121,6 +114,14 @@ class RollerSet:
                 object.__setattr__(self, stiffness, float(palmgren_stiffness(self.roller_length)))
             positive(stiffness, getattr(self, stiffness))
 
+    @classmethod
+    def from_geometry(cls, geometry: BearingGeometry) -> RollerSet:
+        """The dynamic model's bearing for the quasi-static solver: the same clearance and roller mass,
+        Palmgren raceway laws."""
+        return cls(rollers=geometry.rollers, pitch_diameter=geometry.pitch_diameter,
+                   roller_diameter=geometry.roller_diameter, roller_length=geometry.roller_length,
+                   diametral_clearance=geometry.clearance, roller_mass=geometry.roller_mass)
+
     @property
     def roller_angles(self) -> np.ndarray:
         r"""Azimuths :math:`\psi_j = \psi_0 + 2\pi j/Z` [rad], shape (Z,)."""
@@ -133,13 +134,11 @@ class RollerSet:
 
     def cage_speed(self, shaft_speed: float) -> float:
         r"""Epicyclic cage speed :math:`\omega_c = \tfrac12\omega_i(1 - D_w/D_{pw})` [rad/s], outer ring fixed."""
-        from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
-
         return epicyclic_cage_speed(shaft_speed, self.roller_diameter, self.pitch_diameter)
 
     def centrifugal_force(self, shaft_speed: float) -> float:
         r"""Roller centrifugal force :math:`F_c = m_r(D_{pw}/2)\,\omega_c^2` [N] at inner-ring speed [rad/s]."""
-        return self.roller_mass * 0.5 * self.pitch_diameter * self.cage_speed(shaft_speed) ** 2
+        return roller_centrifugal_force(self.roller_mass, self.pitch_diameter, self.cage_speed(shaft_speed))
 
 
 @dataclass(frozen=True)
