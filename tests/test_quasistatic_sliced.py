@@ -56,20 +56,34 @@ def model(crown=CIRCULAR, slices=40, **changes):
 
 
 @pytest.mark.parametrize(
-    "arguments, field, allowed",
+    "arguments, field, value",
     [
-        (dict(roller_crown=CircularCrown(radius=0.01)), "roller_crown.radius", ">= (L_e - L_r)/2"),
-        (dict(inner_raceway_crown=LogarithmicCrown(1e-7, 0.05)), "inner_raceway_crown.length", ">= the effective"),
-        (dict(outer_raceway_crown="crowned"), "outer_raceway_crown", "must be one of"),
-        (dict(slices=0), "slices", "integer in [1, 10000]"),
-        (dict(slices=12.5), "slices", "integer"),
+        (dict(roller_crown=CircularCrown(radius=0.01)), "roller_crown.radius", 0.01),
+        (dict(inner_raceway_crown=LogarithmicCrown(1e-7, 0.05)), "inner_raceway_crown.length", 0.05),
+        (dict(outer_raceway_crown="crowned"), "outer_raceway_crown", "crowned"),
+        (dict(slices=0), "slices", 0),
+        (dict(slices=12.5), "slices", 12.5),
     ],
 )
-def test_bad_sliced_model_names_field_value_and_allowed_range(arguments, field, allowed):
+def test_bad_sliced_model_names_field_value_and_allowed_range(arguments, field, value):
     with pytest.raises(SpecError) as info:
         SlicedRollerSet(rollers(), **arguments)
-    assert info.value.field == field
-    assert allowed in str(info.value)
+    assert info.value.field == field and info.value.value == value
+    assert info.value.allowed  # says what is allowed
+
+
+def test_crown_and_raceway_bounds_follow_the_effective_length():
+    """A circular crown's radius must reach (L_e − L_r)/2 = L/2 without a straight part (the arc spans the
+    effective length), and a logarithmic raceway crown must be at least L long: accepted on the bound (to
+    round-off), rejected just below it."""
+    SlicedRollerSet(rollers(), roller_crown=CircularCrown(radius=HALF * (1 + 1e-9)))
+    with pytest.raises(SpecError) as info:
+        SlicedRollerSet(rollers(), roller_crown=CircularCrown(radius=HALF * (1 - 1e-6)))
+    assert info.value.field == "roller_crown.radius"
+    SlicedRollerSet(rollers(), inner_raceway_crown=LogarithmicCrown(1e-7, LENGTH))
+    with pytest.raises(SpecError) as info:
+        SlicedRollerSet(rollers(), inner_raceway_crown=LogarithmicCrown(1e-7, LENGTH * (1 - 1e-6)))
+    assert info.value.field == "inner_raceway_crown.length"
 
 
 @pytest.mark.parametrize(
@@ -91,7 +105,9 @@ def test_bad_crown_names_the_field(make, field):
 def test_zero_load_without_preload_is_rejected():
     with pytest.raises(SpecError) as info:
         solve_sliced(model(), (0.0, 0.0, 0.0, 0.0))
-    assert info.value.field == "load" and "preload" in str(info.value)
+    assert info.value.field == "load" and tuple(info.value.value) == (0.0, 0.0, 0.0, 0.0)
+    # a preload (negative clearance) makes the same zero load valid
+    assert solve_sliced(model(diametral_clearance=-1e-5), (0.0, 0.0, 0.0, 0.0)).iterations == 0
 
 
 def test_roller_newton_that_does_not_converge_reports_residual_and_iterations():
@@ -103,7 +119,8 @@ def test_roller_newton_that_does_not_converge_reports_residual_and_iterations():
             settings=NewtonSettings(roller_max_iterations=1),
         )
     error = info.value
-    assert error.field == "roller_max_iterations" and error.iterations == 1 and error.residual > 0
+    assert error.field == "roller_max_iterations" and error.value == 1 and error.iterations == 1
+    assert math.isfinite(error.residual) and error.residual > 0 and error.tolerance > 0
 
 
 # --- profiles ------------------------------------------------------------------------------------------------

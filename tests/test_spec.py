@@ -2,12 +2,15 @@
 good input survives a round trip through its mapping."""
 
 import json
+import math
+import tomllib
 from pathlib import Path
 
 import pytest
 
 from bearing_mbs.models import build_scene
 from bearing_mbs.cli import main
+from bearing_mbs.contact.normal import NORMAL_LAWS
 from bearing_mbs.spec import SpecError, to_mapping
 from bearing_mbs.models import load_spec, spec_from_mapping
 
@@ -22,32 +25,49 @@ def rejected(overrides, path=CASE3):
 
 
 @pytest.mark.parametrize(
-    "override, field, allowed",
+    "override, field, value",
     [
-        ("balls.0.mass=-0.1", "balls.0.mass", "> 0"),
-        ("balls.0.radius=0", "balls.0.radius", "> 0"),
-        ("contact.wall.stiffness=-6e6", "contact.wall.stiffness", "> 0"),
-        ("contact.wall.restitution=0", "contact.wall.restitution", "(0, 1]"),
-        ("contact.wall.restitution=1.2", "contact.wall.restitution", "(0, 1]"),
-        ("contact.wall.friction_coefficient=-0.1", "contact.wall.friction_coefficient", "[0, 2]"),
-        ("contact.wall.regularisation_speed=0", "contact.wall.regularisation_speed", "> 0"),
-        ("contact.wall.normal_law='hertz'", "contact.wall.normal_law", "lankarani_nikravesh"),
-        ("solver.reference.step=0", "solver.reference.step", "> 0"),
-        ("solver.exudyn.step=-1e-5", "solver.exudyn.step", "> 0"),
-        ("solver.output_interval=0", "solver.output_interval", "> 0"),
-        ("scenario.end_time=-1", "scenario.end_time", "> 0"),
-        ("contact.wall.stifness=1e6", "contact.wall.stifness", "unknown key"),
-        ("solver.engine=matlab", "solver.engine", "reference, exudyn"),
-        ("balls.3.mass=1", "balls.3", "index"),
-        ("contact.wall.stiffness=big", "contact.wall.stiffness", "a number"),
-        ("balls.0.position=[0.0, 0.004]", "balls.0.position", "overlap"),
+        ("balls.0.mass=-0.1", "balls.0.mass", -0.1),
+        ("balls.0.radius=0", "balls.0.radius", 0.0),
+        ("contact.wall.stiffness=-6e6", "contact.wall.stiffness", -6e6),
+        ("contact.wall.restitution=0", "contact.wall.restitution", 0.0),
+        ("contact.wall.restitution=1.2", "contact.wall.restitution", 1.2),
+        ("contact.wall.friction_coefficient=-0.1", "contact.wall.friction_coefficient", -0.1),
+        ("contact.wall.regularisation_speed=0", "contact.wall.regularisation_speed", 0.0),
+        ("contact.wall.normal_law='hertz'", "contact.wall.normal_law", "hertz"),
+        ("solver.reference.step=0", "solver.reference.step", 0.0),
+        ("solver.exudyn.step=-1e-5", "solver.exudyn.step", -1e-5),
+        ("solver.output_interval=0", "solver.output_interval", 0.0),
+        ("scenario.end_time=-1", "scenario.end_time", -1.0),
+        ("contact.wall.stifness=1e6", "contact.wall.stifness", 1e6),
+        ("solver.engine=matlab", "solver.engine", "matlab"),
+        ("balls.3.mass=1", "balls.3", "3"),
+        ("contact.wall.stiffness=big", "contact.wall.stiffness", "big"),
+        # the value reported is the starting gap: centre height 4 mm minus radius 5 mm
+        ("balls.0.position=[0.0, 0.004]", "balls.0.position", -0.001),
     ],
 )
-def test_bad_input_names_field_value_and_allowed_range(override, field, allowed):
+def test_bad_input_names_field_value_and_allowed_range(override, field, value):
     error = rejected([override])
     assert error.field == field
-    assert allowed in str(error)
-    assert field in str(error)
+    assert error.value == (pytest.approx(value, rel=1e-12) if isinstance(value, float) else value)
+    assert error.allowed
+    # the message shows the field, the value and what is allowed, whatever its wording
+    assert all(str(part) in str(error) for part in (error.field, error.value, error.allowed))
+
+
+@pytest.mark.parametrize(
+    "override, field, choices",
+    [
+        ("contact.wall.normal_law='hertz'", "contact.wall.normal_law", NORMAL_LAWS),
+        ("solver.engine=matlab", "solver.engine", ("reference", "exudyn")),
+        ("contact.wall.stifness=1e6", "contact.wall.stifness", ("stiffness", "restitution", "friction_law")),
+    ],
+)
+def test_a_bad_choice_lists_the_allowed_ones(override, field, choices):
+    error = rejected([override])
+    assert error.field == field
+    assert all(choice in error.allowed for choice in choices), error.allowed
 
 
 def test_unknown_key_in_the_file_is_an_error(tmp_path):
@@ -55,17 +75,25 @@ def test_unknown_key_in_the_file_is_an_error(tmp_path):
     path = tmp_path / "bad.toml"
     path.write_text(text)
     error = rejected([], path)
-    assert error.field == "box.ceiling" and "allowed keys: floor, left_wall, right_wall" in str(error)
+    assert error.field == "box.ceiling" and error.value == 1.0
+    assert all(key in error.allowed for key in ("floor", "left_wall", "right_wall")), error.allowed
 
 
 def test_overlapping_balls_are_rejected():
     error = rejected(["balls.1.position=[0.016, 0.021]"], SCENARIOS / "seed_case4.toml")
-    assert error.field == "balls.1.position" and "ball1-ball2" in str(error)
+    assert error.field == "balls.1.position"
+    # the value is the pair's starting gap: centre distance minus the sum of the radii, from the scenario file
+    case4 = tomllib.loads((SCENARIOS / "seed_case4.toml").read_text())["balls"]
+    centre = case4[0]["position"]
+    expected_gap = math.hypot(0.016 - centre[0], 0.021 - centre[1]) - case4[0]["radius"] - case4[1]["radius"]
+    assert expected_gap < 0 and error.value == pytest.approx(expected_gap, rel=1e-9)
+    assert "ball1-ball2" in str(error)  # names the pair
 
 
 def test_fixed_coordinate_must_start_at_rest():
     error = rejected(["balls.0.free=['y']"])
     assert error.field == "balls.0.velocity"
+    assert error.value == tomllib.loads(CASE3.read_text())["balls"][0]["velocity"][0]  # the fixed x's speed
 
 
 def test_explicit_exudyn_solver_with_a_joint_is_rejected_before_running():
@@ -74,15 +102,18 @@ def test_explicit_exudyn_solver_with_a_joint_is_rejected_before_running():
     spec = load_spec(SCENARIOS / "seed_case5.toml", ["solver.exudyn.method=rk44"])
     with pytest.raises(SpecError) as info:
         check_supported(build_scene(spec), spec.solver)
-    assert info.value.field == "solver.exudyn.method" and "generalized_alpha" in str(info.value)
+    assert info.value.field == "solver.exudyn.method" and info.value.value == "rk44"
+    assert "generalized_alpha" in info.value.allowed  # an implicit method that accepts joints
 
 
 def test_native_connector_refuses_friction():
     from bearing_mbs.engines.exudyn.engine import check_supported
 
     spec = load_spec(CASE3, ["solver.exudyn.connector=native"])
-    with pytest.raises(SpecError, match="normal forces only"):
+    with pytest.raises(SpecError) as info:
         check_supported(build_scene(spec), spec.solver)
+    assert info.value.field == "solver.exudyn.connector" and info.value.value == "native"
+    assert "ball-floor" in info.value.allowed  # names the pair with friction
 
 
 @pytest.mark.parametrize("name", [f"seed_case{i}" for i in range(1, 6)])
@@ -102,7 +133,7 @@ def test_cli_rejects_bad_input_with_exit_status_2_and_writes_nothing(tmp_path, c
     out = tmp_path / "out"
     status = main(["run", str(CASE3), "--out", str(out), "--set", "contact.wall.restitution=0", "--quiet"])
     assert status == 2
-    assert "contact.wall.restitution = 0" in capsys.readouterr().err
+    assert "contact.wall.restitution" in capsys.readouterr().err  # the field is named
     assert not out.exists()
 
 
