@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-slow bench clean
+.PHONY: demo test test-slow bench static-check skidding cage-models clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +23,17 @@ test-slow: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py
+
+# The studies of docs/quasistatic.md, docs/skidding.md and docs/cage-models.md (--out docs/figures redraws the docs').
+static-check: $(STAMP)
+	$(BIN)/bearing-mbs static-check scenarios/static_check.toml --out out/static_check
+
+skidding: $(STAMP)
+	$(BIN)/bearing-mbs skidding scenarios/seed_hss_steady.toml --out out/skidding \
+		--set scenario.end_time=0.3 --set analysis.start=0.1
+
+cage-models: $(STAMP)
+	$(BIN)/bearing-mbs cage-models scenarios/cage_models.toml --out out/cage_models
 
 clean:
 	rm -rf $(VENV) out .pytest_cache

@@ -5,9 +5,7 @@
 
 from __future__ import annotations
 
-import json
 import logging
-import math
 from pathlib import Path
 
 from bearing_mbs.models import MODELS, build_scene
@@ -19,6 +17,8 @@ from bearing_mbs.core.scene import Scene
 from bearing_mbs.spec import Spec, to_mapping
 from bearing_mbs.spec.solver import SolverSpec
 from bearing_mbs.elements import scene_counts
+from bearing_mbs.io.json import json_safe as _json_safe
+from bearing_mbs.io.json import write_json
 
 log = logging.getLogger(__name__)
 
@@ -92,18 +92,3 @@ def write_outputs(spec: Spec, scene: Scene, result: Result, directory: str | Pat
     if figures:
         MODELS[spec.scenario.model].figures(spec, scene, result, directory)
     return summary
-
-
-def write_json(path: Path, data) -> None:
-    """Atomic JSON write."""
-    temporary = path.with_name(path.name + ".part")
-    temporary.write_text(json.dumps(data, indent=2) + "\n")
-    temporary.replace(path)
-
-
-def _json_safe(value):
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if isinstance(value, dict):
-        return {k: _json_safe(v) for k, v in value.items()}
-    return value

@@ -24,7 +24,6 @@ from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, solve_r
 from bearing_mbs.models import load_spec
 from bearing_mbs.studies.static_check import (
     DEFAULT_LOADS,
-    DEFAULT_SCENARIO,
     ENGINES,
     compare_static,
     finite_difference_stiffness,
@@ -34,6 +33,7 @@ from bearing_mbs.studies.static_check import (
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 STEADY = SCENARIOS / "seed_hss_steady.toml"
+STATIC = SCENARIOS / "static_check.toml"
 RPM = 2 * math.pi / 60
 
 #: Issue 5's acceptance: displacement and largest roller load within 1 % of the quasi-static solution.
@@ -48,7 +48,7 @@ def direction(angle_deg: float) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def static_spec():
-    return load_spec(DEFAULT_SCENARIO)
+    return load_spec(STATIC)
 
 
 @pytest.mark.parametrize("engine", ENGINES)

@@ -1,1 +1,1 @@
-"""Input and output: JSON and figure files."""
+"""Input and output: JSON and figure files (written atomically; no other ``bearing_mbs`` layer is imported)."""

@@ -1,1 +1,3 @@
-"""Studies: many simulations of one scenario (sensitivity runs in :mod:`.sensitivity`)."""
+"""Studies: many simulations of one scenario, each run from a ``bearing-mbs`` subcommand (convergence, numerics
+report, stability, static check, skidding, cage models; sensitivity on Dask in :mod:`.sensitivity`), sharing the
+plumbing of :mod:`.common`."""

@@ -22,8 +22,6 @@ Norms (relative unless noted), over the window ``[start, end]``:
 
 from __future__ import annotations
 
-import dataclasses
-import json
 import logging
 from pathlib import Path
 
@@ -33,9 +31,11 @@ from bearing_mbs.models import build_scene
 from bearing_mbs.engines import simulate
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
-from bearing_mbs.runner import write_json
-from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.io.json import write_json
+from bearing_mbs.spec import Spec, SpecError, to_mapping
 from bearing_mbs.spec.convergence import RunSettings
+from bearing_mbs.studies.common import resample_result, solver_at
 from bearing_mbs.studies.table import append_row, number, read_rows, text
 
 log = logging.getLogger(__name__)
@@ -46,18 +46,10 @@ BEARING_NORMS = ("cage_speed", "roller_loads", "slips")
 
 
 def solver_for(spec: Spec, run: RunSettings, value: float):
-    """The spec's solver settings with ``run`` at step or tolerance ``value``."""
-    solver = dataclasses.replace(spec.solver, engine=run.engine)
+    """The spec's solver settings with ``run`` at step [s] or tolerance ``value``."""
     largest = run.step if run.step is not None else spec.solver.output_interval
-    if run.engine == "reference":
-        settings = dataclasses.replace(solver.reference, method=run.method, contact_step=None,
-                                       step=largest if run.adaptive else value,
-                                       tolerance=value if run.adaptive else solver.reference.tolerance)
-        return dataclasses.replace(solver, reference=settings)
-    settings = dataclasses.replace(solver.exudyn, method=run.method, connector=run.connector,
-                                   step=largest if run.adaptive else value,
-                                   tolerance=value if run.adaptive else solver.exudyn.tolerance)
-    return dataclasses.replace(solver, exudyn=settings)
+    changes = {} if run.engine == "reference" else {"connector": run.connector}
+    return solver_at(spec.solver, run.engine, run.method, value, largest_step=largest, **changes)
 
 
 def ladder(run: RunSettings) -> list[tuple[float | None, float | None]]:
@@ -75,24 +67,10 @@ def window_mask(spec: Spec, times: np.ndarray) -> np.ndarray:
     return (times >= start - 1e-12) & (times <= end + 1e-12)
 
 
-def resample(result: Result, times: np.ndarray) -> Result:
-    """The result at the given instants (linear interpolation; exact when the instants coincide)."""
-    if result.time.size == times.size and np.allclose(result.time, times, rtol=0, atol=1e-12):
-        return result
-
-    def at(series):
-        flat = series.reshape(series.shape[0], -1)
-        columns = [np.interp(times, result.time, flat[:, j]) for j in range(flat.shape[1])]
-        return np.array(columns).T.reshape((times.size,) + series.shape[1:])
-
-    return dataclasses.replace(result, time=times, position=at(result.position), velocity=at(result.velocity),
-                               pair_output=at(result.pair_output))
-
-
 def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
     """Every applicable norm of ``result`` against ``reference`` (see the module docstring)."""
     mask = window_mask(spec, reference.time)
-    run = resample(result, reference.time)
+    run = resample_result(result, reference.time)
     norms = {}
     if spec.scenario.model == "balls":
         translational = np.concatenate([[3 * i, 3 * i + 1] for i in range(len(scene.bodies))])
@@ -107,7 +85,7 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
 
         cage_run, cage_ref = skidding.cage_speed(scene, run)[mask], skidding.cage_speed(scene, reference)[mask]
         norms["cage_speed"] = float(abs(cage_run.mean() - cage_ref.mean()) / abs(cage_ref.mean()))
-        inner = skidding.pair_columns(scene, "-inner_race")
+        inner = skidding.pair_columns(scene, "inner_race")
         loads_run = run.pair_series("normal_force")[mask][:, inner]
         loads_ref = reference.pair_series("normal_force")[mask][:, inner]
         norms["roller_loads"] = float(np.abs(loads_run - loads_ref).max() / loads_ref.max())
@@ -200,12 +178,8 @@ def observed_orders(rows: list[dict]) -> dict:
 
 
 def work_precision_figure(rows: list[dict], path: Path, title: str) -> Path:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axis = plt.subplots(figsize=(7, 5))
+    """Error against wall time [s] of every engine and method (log axes)."""
+    figure, axis = new_figure(figsize=(7, 5))
     for key in sorted({(r["engine"], r["solver"]) for r in rows}):
         points = sorted((number(r["wall_time_s"]), number(r["error"])) for r in rows
                         if (r["engine"], r["solver"]) == key and r["status"] == "success" and number(r["error"]) > 0)
@@ -216,10 +190,7 @@ def work_precision_figure(rows: list[dict], path: Path, title: str) -> Path:
     axis.grid(True, which="both", alpha=0.3)
     axis.legend(fontsize="small")
     axis.set_title(title)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(figure, path)
 
 
 def markdown(summary: dict, rows: list[dict]) -> str:
@@ -251,20 +222,14 @@ def _cached_run(spec, scene, run: RunSettings, path: Path, progress) -> Result:
     step, tolerance = ladder(run)[0]
     if path.exists():
         cached = Result.load(path)
-        if cached.spec == _mapping(spec) and cached.method == run.method and cached.engine == run.engine:
+        if cached.spec == to_mapping(spec) and cached.method == run.method and cached.engine == run.engine:
             return cached
     result = run_setting(spec, scene, run, step, tolerance, progress)
     if not result.success:
         raise RuntimeError(f"the reference run failed: {result.message}")
-    result.spec = _mapping(spec)
+    result.spec = to_mapping(spec)
     result.save(path)
     return result
-
-
-def _mapping(spec):
-    from bearing_mbs.spec import to_mapping
-
-    return json.loads(json.dumps(to_mapping(spec)))
 
 
 def _describe(run: RunSettings) -> str:

@@ -1,7 +1,7 @@
 """Figures and tables of docs/numerics.md from a work–precision study's ``convergence.csv``.
 
-``python -m bearing_mbs.studies.numerics_report STUDY_DIR --name NAME --out docs/figures [--norms cage_speed,slips]
-[--document-step 5.56e-7]``
+``bearing-mbs numerics-report STUDY_DIR --name NAME --out docs/figures [--norms cage_speed,slips]
+[--document-step 5.56e-7]`` runs :func:`run` on the directory of a ``bearing-mbs convergence`` study.
 
 A run is **sound** when its slips are converged: its slip-ratio error against the reference stays below
 ``SOUND_SLIPS`` (1e-4). Runs above an explicit method's friction stability limit are bounded but not sound: their
@@ -14,10 +14,15 @@ difference) at equal error.
 
 from __future__ import annotations
 
-import argparse
 import csv
+import logging
 import math
 from pathlib import Path
+
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.spec import SpecError
+
+log = logging.getLogger(__name__)
 
 #: Largest slip-ratio error of a sound run [-].
 SOUND_SLIPS = 1e-4
@@ -27,7 +32,11 @@ LABELS = {"cage_speed": "mean cage speed error [-]", "slips": "slip ratio error 
 
 
 def read(directory: str | Path) -> list[dict]:
-    with (Path(directory) / "convergence.csv").open(newline="") as handle:
+    """The successful runs of a study's ``convergence.csv``, with their errors as floats and ``sound`` set."""
+    table = Path(directory) / "convergence.csv"
+    if not table.is_file():
+        raise SpecError("study", str(directory), "has no convergence.csv (run bearing-mbs convergence into it first)")
+    with table.open(newline="") as handle:
         rows = [r for r in csv.DictReader(handle) if r["status"] == "success"]
     for r in rows:
         for key in ("wall_time_s", "cage_speed", "slips", "roller_loads", "positions"):
@@ -57,14 +66,13 @@ def speed_ups(rows, norm: str) -> list[dict]:
 
 
 def figure(rows, norms, path: Path, title: str, document_step: float = 1 / 1.8e6) -> Path:
+    """Each norm against wall time [s] (log axes), hollow where the slips are not converged, the document's scheme
+    at ``document_step`` [s] starred."""
     import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(1, len(norms), figsize=(6.2 * len(norms), 5), squeeze=False)
+    fig, axes = new_figure(1, len(norms), figsize=(6.2 * len(norms), 5), squeeze=False)
     keys = sorted({(r["engine"], r["solver"]) for r in rows})
-    colours = dict(zip(keys, plt.rcParams["axes.prop_cycle"].by_key()["color"]))
+    colours = dict(zip(keys, matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]))
     for axis, norm in zip(axes[0], norms):
         for key in keys:
             points = sorted((r["wall_time_s"], r[norm], r["sound"]) for r in rows if (r["engine"], r["solver"]) == key
@@ -89,10 +97,7 @@ def figure(rows, norms, path: Path, title: str, document_step: float = 1 / 1.8e6
     axes[0][0].legend(fontsize=7)
     note = " (hollow: slips not converged, a spurious skidding cycle)" if not all(r["sound"] for r in rows) else ""
     fig.suptitle(title + note, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def markdown(rows, norm: str, targets=(1e-2, 1e-3, 1e-4)) -> str:
@@ -120,25 +125,22 @@ def markdown(rows, norm: str, targets=(1e-2, 1e-3, 1e-4)) -> str:
     return "\n".join(lines) + "\n"
 
 
-def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("study", help="directory of a bearing-mbs convergence study")
-    parser.add_argument("--name", required=True, help="scenario name for titles and file names")
-    parser.add_argument("--out", required=True, help="directory for the figure and the Markdown tables")
-    parser.add_argument("--norms", default="cage_speed,slips", help="comma-separated norms to plot")
-    parser.add_argument("--document-step", type=float, default=1 / 1.8e6,
-                        help="the document's step for its scheme, starred (default 1/1.8e6 s)")
-    args = parser.parse_args(argv)
-    rows = read(args.study)
-    norms = args.norms.split(",")
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    figure(rows, norms, out / f"work_precision_{args.name}.png", args.name, args.document_step)
+def run(study: str | Path, name: str, directory: str | Path, norms=("cage_speed", "slips"),
+        document_step: float = 1 / 1.8e6) -> str:
+    """Write ``work_precision_NAME.png`` and ``work_precision_NAME.md`` (the tables of every norm) into
+    ``directory`` from the convergence study in ``study``; returns the tables' Markdown. ``document_step`` [s]:
+    the document's step for its scheme, starred in the figure."""
+    norms = tuple(norms)
+    unknown = [norm for norm in norms if norm not in LABELS]
+    if unknown or not norms:
+        raise SpecError("norms", ",".join(unknown), f"must be among {', '.join(LABELS)}")
+    if not document_step > 0:
+        raise SpecError("document_step", document_step, "must be > 0")
+    rows = read(study)
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    figure(rows, norms, directory / f"work_precision_{name}.png", name, document_step)
     text = "\n".join(markdown(rows, norm) for norm in norms)
-    (out / f"work_precision_{args.name}.md").write_text(text)
-    print(text)
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())
+    (directory / f"work_precision_{name}.md").write_text(text)
+    log.info("%s: %d successful runs -> %s", name, len(rows), directory)
+    return text

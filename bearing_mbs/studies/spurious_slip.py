@@ -17,7 +17,6 @@ a 4× finer step.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -26,6 +25,7 @@ import numpy as np
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.spec.solver import SolverSpec
+from bearing_mbs.studies.common import refined, resample, setting_of
 
 #: Spurious when slips differ by more than this fraction of the pair's regularisation speed.
 SLIP_TOLERANCE = 0.1
@@ -55,27 +55,6 @@ class SlipCheck:
     message: str
 
 
-def refined(solver: SolverSpec, refinement: float) -> SolverSpec:
-    """The same settings with the step divided by ``refinement`` (adaptive: the tolerance by ``refinement**5``)."""
-    settings = solver.active
-    if settings.adaptive:
-        changed = dataclasses.replace(settings, tolerance=settings.tolerance / refinement**5)
-    else:
-        changes = {"step": settings.step / refinement}
-        if getattr(settings, "contact_step", None):
-            changes["contact_step"] = settings.contact_step / refinement
-        changed = dataclasses.replace(settings, **changes)
-    return dataclasses.replace(solver, **{solver.engine: changed})
-
-
-def step_of(solver: SolverSpec) -> float:
-    """The setting that a refinement divides: the step, or the tolerance of an adaptive method."""
-    settings = solver.active
-    if settings.adaptive:
-        return settings.tolerance
-    return getattr(settings, "contact_step", None) or settings.step
-
-
 def compare_slips(scene: Scene, run: Result, reference: Result, load_fraction: float = LOAD_FRACTION,
                   slip_tolerance: float = SLIP_TOLERANCE) -> dict:
     """Largest slip difference of ``run`` against ``reference`` over loaded friction pairs at the reference's output
@@ -95,7 +74,7 @@ def compare_slips(scene: Scene, run: Result, reference: Result, load_fraction: f
     force = reference.pair_series("normal_force")[:count]
     loaded = (force >= load_fraction * np.nanmax(force)) & friction[None, :] & (force > 0)
     reference_slip = reference.pair_series("slip")[:count]
-    slip = _resample(run.time, run.pair_series("slip"), reference.time[:count])
+    slip = resample(run.time, run.pair_series("slip"), reference.time[:count])
     tolerance = slip_tolerance * np.array([p.law.regularisation_speed for p in scene.pairs])
     with np.errstate(invalid="ignore"):
         ratio = np.where(loaded, np.abs(slip - reference_slip) / tolerance[None, :], -1.0)
@@ -106,13 +85,6 @@ def compare_slips(scene: Scene, run: Result, reference: Result, load_fraction: f
     return {"ratio": float(ratio[i, k]), "difference": float(abs(slip[i, k] - reference_slip[i, k])),
             "time": float(reference.time[i]), "pair": int(k), "slip": float(slip[i, k]),
             "reference_slip": float(reference_slip[i, k])}
-
-
-def _resample(times, series, at):
-    """(T, P) series at the instants ``at``: exact where the instants coincide, linear in between."""
-    if times.size == at.size and np.allclose(times, at, rtol=0, atol=1e-12):
-        return series
-    return np.column_stack([np.interp(at, times, series[:, k]) for k in range(series.shape[1])])
 
 
 def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, result: Result | None = None,
@@ -126,7 +98,7 @@ def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, resul
     finer_solver = refined(solver, refinement)
     finer = simulate(scene, finer_solver, end_time, progress)
     found = compare_slips(scene, result, finer)
-    step, finer_step = step_of(solver), step_of(finer_solver)
+    step, finer_step = setting_of(solver), setting_of(finer_solver)
     what = "tolerance" if solver.active.adaptive else "step"
     spurious = found["ratio"] > 1.0
     if found["pair"] is None:

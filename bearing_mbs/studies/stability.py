@@ -37,7 +37,6 @@ measured one).
 from __future__ import annotations
 
 import dataclasses
-import json
 import logging
 import math
 import time
@@ -52,9 +51,10 @@ from bearing_mbs.analysis import energy_balance_error
 from bearing_mbs.models import build_scene
 from bearing_mbs.engines import simulate
 from bearing_mbs.core.progress import ProgressMeter
-from bearing_mbs.runner import write_json
-from bearing_mbs.spec import Spec, SpecError, to_mapping
+from bearing_mbs.io.json import write_json
 from bearing_mbs.models import spec_from_mapping
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.studies.common import refined_setting, solver_at, spec_mapping, with_overrides
 from bearing_mbs.studies.spurious_slip import compare_slips
 from bearing_mbs.studies.stability_cases import (  # noqa: F401  (re-exported: the suite's cases and solvers)
     ADAPTIVE,
@@ -167,17 +167,9 @@ class CellRunner:
         self.advice = advise(scene)
 
     def solver(self, setting: float):
-        solver = dataclasses.replace(self.spec.solver, engine=self.engine,
-                                     output_interval=self.settings.output_interval)
-        active = getattr(solver, self.engine)
-        if self.adaptive:
-            changed = dataclasses.replace(active, method=self.method, tolerance=setting,
-                                          step=self.settings.output_interval)
-        else:
-            changed = dataclasses.replace(active, method=self.method, step=setting)
-            if self.engine == "reference":
-                changed = dataclasses.replace(changed, contact_step=None)
-        return dataclasses.replace(solver, **{self.engine: changed})
+        """The spec's solver on this cell's engine and method at ``setting`` (step [s] or tolerance)."""
+        solver = dataclasses.replace(self.spec.solver, output_interval=self.settings.output_interval)
+        return solver_at(solver, self.engine, self.method, setting, largest_step=self.settings.output_interval)
 
     def expected_steps(self, setting: float) -> float:
         if self.adaptive:  # stability-bound: about one step per advised limit
@@ -213,8 +205,7 @@ class CellRunner:
         return probe
 
     def finer(self, setting: float) -> float:
-        refinement = self.settings.refinement
-        return setting / refinement**5 if self.adaptive else setting / refinement
+        return refined_setting(setting, self.settings.refinement, self.adaptive)
 
     def verdict(self, setting: float) -> tuple[str, str]:
         """("pass" | "fail" | "unknown", reason) of one setting."""
@@ -336,24 +327,16 @@ def _tolerance_walk(runner: CellRunner, tolerances: list[float]) -> dict:
 
 
 def case_spec(base: Spec, case: Case) -> Spec:
-    data = _mapping(base)
+    """The base scenario varied by ``case`` (without the base's study section)."""
+    data = spec_mapping(base)
+    data.pop("convergence", None)
     case.change(data, base)
     data["scenario"]["name"] = f"{base.scenario.name} [{case.name}]"
     return spec_from_mapping(data)
 
 
-def _mapping(spec: Spec) -> dict:
-    """The spec as a plain mapping that validates again, without the study section."""
-    data = json.loads(json.dumps(to_mapping(spec)))
-    data.pop("convergence", None)
-    return data
-
-
 def _with_end_time(spec: Spec, end_time: float) -> Spec:
-    data = _mapping(spec)
-    data["scenario"]["end_time"] = end_time
-    data["analysis"]["start"] = end_time / 2
-    return spec_from_mapping(data)
+    return with_overrides(spec, {"scenario.end_time": end_time, "analysis.start": end_time / 2})
 
 
 def _round_up(value: float, quantum: float) -> float:

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.studies.table import number
 
 
@@ -82,16 +83,13 @@ def markdown(summary: dict, rows: list[dict]) -> str:
 
 def heat_map(rows: list[dict], path: Path, title: str) -> Path:
     """Cases × solvers. Explicit cells: log2(measured/advised) on a diverging scale; others: pass or fail."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     from matplotlib.colors import TwoSlopeNorm
+    from matplotlib.patches import Rectangle
 
     cases = list(dict.fromkeys(r["case"] for r in rows))
     solvers = list(dict.fromkeys(f"{r['engine']}\n{r['solver']}" for r in rows))
     values = np.full((len(cases), len(solvers)), np.nan)
-    fig, axis = plt.subplots(figsize=(1.3 * len(solvers) + 3, 0.42 * len(cases) + 1.8))
+    fig, axis = new_figure(figsize=(1.3 * len(solvers) + 3, 0.42 * len(cases) + 1.8))
     norm = TwoSlopeNorm(vmin=-2.0, vcenter=0.0, vmax=2.0)
     for r in rows:
         i, j = cases.index(r["case"]), solvers.index(f"{r['engine']}\n{r['solver']}")
@@ -102,7 +100,7 @@ def heat_map(rows: list[dict], path: Path, title: str) -> Path:
         else:
             passed = r["verdict"].startswith("pass")
             colour = "#c7e9c0" if passed else "#d9d9d9" if r["verdict"].startswith("unknown") else "#fcbba1"
-            axis.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, color=colour))
+            axis.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, color=colour))
             if r["kind"] == "implicit" and passed:
                 text = f"h {_fmt(r['largest_pass'])}"
             elif r["kind"] == "adaptive" and passed:
@@ -120,20 +118,12 @@ def heat_map(rows: list[dict], path: Path, title: str) -> Path:
     bar = fig.colorbar(image, ax=axis, fraction=0.04)
     bar.set_label("log2(measured / advised limit)")
     axis.set_title(title, fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def advised_figure(rows: list[dict], path: Path, name: str) -> Path:
     """The advisor's limit beside the measured one, every explicit cell: the band is the factor of 2."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axis = plt.subplots(figsize=(6, 5))
+    fig, axis = new_figure(figsize=(6, 5))
     cells = [r for r in rows if r["kind"] == "explicit" and number(r["ratio"]) > 0]
     markers = dict(zip(sorted({f"{r['engine']} {r['solver']}" for r in cells}), "osD^v<>"))
     for label, marker in markers.items():
@@ -151,10 +141,7 @@ def advised_figure(rows: list[dict], path: Path, name: str) -> Path:
     axis.set_title(f"{name}: step advisor against the stability suite", fontsize=9)
     axis.grid(True, which="both", alpha=0.3)
     axis.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def _fmt(value) -> str:

@@ -1,4 +1,7 @@
-r"""Quasi-static cross-check of the dynamic bearing model (issue 5, and issue 3's steady-running check).
+r"""Quasi-static cross-check of the dynamic bearing model: static equilibria, stiffness and steady running.
+
+``bearing-mbs static-check SCENARIO.toml --out DIR`` runs :func:`run` (the repository's scenario is
+``scenarios/static_check.toml``), prints :func:`report` and writes ``DIR/static_check.json`` (:func:`write`).
 
 The quasi-static planar solver (:func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`, document 003's displacement
 method) is the independent reference: it shares the Palmgren law and the geometry with the dynamic model,
@@ -47,7 +50,6 @@ displacement averaged over the rollers' phase; both with the centrifugal force o
 
 from __future__ import annotations
 
-import json
 import logging
 import math
 from dataclasses import dataclass, field, replace
@@ -55,6 +57,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.io.json import write_json
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.models import load_spec
 from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
@@ -64,7 +67,8 @@ from bearing_mbs.models.cylindrical_roller.stiffness import quasi_static_load, r
 log = logging.getLogger(__name__)
 
 ENGINES = ("exudyn", "reference")
-DEFAULT_SCENARIO = Path(__file__).resolve().parents[2] / "scenarios" / "static_check.toml"
+#: The file :func:`write` writes.
+RESULT_FILE = "static_check.json"
 #: Load-ramp shapes s(τ), τ = t/T_r in [0, 1]: ``cosine`` starts and ends with zero slope (the default);
 #: ``linear``'s slope jumps excite the ring's radial mode ~15 times more (2 % oscillations at 5 kN).
 RAMP_SHAPES = {"cosine": lambda tau: 0.5 * (1.0 - np.cos(np.pi * tau)), "linear": lambda tau: tau}
@@ -172,7 +176,7 @@ def static_equilibrium(spec: Spec, applied, settings: SettlingSettings = Settlin
     drift = float(np.hypot(*(ring[half:].mean(axis=0) - ring[:half].mean(axis=0)))) / scale
     amplitude = float(np.max(np.hypot(*(ring - displacement).T))) / scale
     angles = np.unwrap(roller_orbit_angles(scene, result)[mask], axis=0).mean(axis=0)
-    loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "-inner_race")].mean(axis=0)
+    loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].mean(axis=0)
     speed = float(np.max(np.hypot(*result.velocity[mask][:, :2].T)))
     settled = result.success and drift <= settings.drift_tolerance and amplitude <= settings.amplitude_tolerance
     if not settled:
@@ -338,7 +342,7 @@ class StaticCheck:
         return {"static": [c.row() for c in self.comparisons], "stiffness": [s.row() for s in self.stiffness]}
 
 
-def run(scenario: str | Path = DEFAULT_SCENARIO, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides=(),
+def run(scenario: str | Path, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides=(),
         stiffness_load: float | None = 20e3, stiffness_angle: float = -84.0, relative_step: float = 0.05,
         settings: SettlingSettings = SettlingSettings()) -> StaticCheck:
     """The whole cross-check: loads [N] along ``[load] angle`` on each engine, then the finite-difference
@@ -351,6 +355,10 @@ def run(scenario: str | Path = DEFAULT_SCENARIO, loads=DEFAULT_LOADS, engines=EN
     for engine in engines:
         if engine not in ENGINES:
             raise SpecError("engines", engine, f"must be one of {', '.join(ENGINES)}")
+    for load in loads:
+        positive("loads", load)
+    if stiffness_load is not None:
+        positive("stiffness_load", stiffness_load)
     angle = math.radians(spec.load.angle)
     direction = np.array([math.cos(angle), math.sin(angle)])
     comparisons = tuple(compare_static(spec, load * direction, settings, engine) for engine in engines
@@ -364,34 +372,25 @@ def run(scenario: str | Path = DEFAULT_SCENARIO, loads=DEFAULT_LOADS, engines=EN
     return StaticCheck(comparisons, stiffness)
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Run the cross-check, print a table, and write ``static_check.json`` to ``--out`` if given."""
-    import argparse
-
-    parser = argparse.ArgumentParser(description="quasi-static cross-check of the dynamic bearing model")
-    parser.add_argument("scenario", nargs="?", default=str(DEFAULT_SCENARIO))
-    parser.add_argument("--out", help="directory for static_check.json")
-    parser.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE")
-    args = parser.parse_args(argv)
-    logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
-    check = run(args.scenario, overrides=args.set)
-    print(f"{'engine':10} {'F [N]':>8} {'|u| dyn [um]':>13} {'|u| qs [um]':>12} {'err u':>9} "
-          f"{'Qmax dyn [N]':>13} {'Qmax qs [N]':>12} {'err Qmax':>9} {'settled':>7}")
+def report(check: StaticCheck) -> str:
+    """The check as a plain-text table: displacements [µm] and largest roller loads [N], dynamic against
+    quasi-static, then each engine's stiffness matrix [N/m]."""
+    lines = [f"{'engine':10} {'F [N]':>8} {'|u| dyn [um]':>13} {'|u| qs [um]':>12} {'err u':>9} "
+             f"{'Qmax dyn [N]':>13} {'Qmax qs [N]':>12} {'err Qmax':>9} {'settled':>7}"]
     for row in (c.row() for c in check.comparisons):
-        print(f"{row['engine']:10} {row['load_N']:8.0f} {row['displacement_dynamic_m'] * 1e6:13.4f} "
-              f"{row['displacement_quasi_static_m'] * 1e6:12.4f} {row['displacement_error']:9.2e} "
-              f"{row['max_roller_load_dynamic_N']:13.1f} {row['max_roller_load_quasi_static_N']:12.1f} "
-              f"{row['max_roller_load_error']:9.2e} {row['settled']!s:>7}")
+        lines.append(f"{row['engine']:10} {row['load_N']:8.0f} {row['displacement_dynamic_m'] * 1e6:13.4f} "
+                     f"{row['displacement_quasi_static_m'] * 1e6:12.4f} {row['displacement_error']:9.2e} "
+                     f"{row['max_roller_load_dynamic_N']:13.1f} {row['max_roller_load_quasi_static_N']:12.1f} "
+                     f"{row['max_roller_load_error']:9.2e} {row['settled']!s:>7}")
     for item in check.stiffness:
-        print(f"{item.engine}: K dynamic [N/m] {np.array2string(item.dynamic, precision=4)}\n"
-              f"  analytic {np.array2string(item.analytic, precision=4)}\n"
-              f"  error {item.error:.2e} (quasi-static secant {item.secant_error:.2e})")
-    if args.out:
-        out = Path(args.out)
-        out.mkdir(parents=True, exist_ok=True)
-        (out / "static_check.json").write_text(json.dumps(check.to_dict(), indent=2) + "\n")
-    return 0
+        lines.append(f"{item.engine}: K dynamic [N/m] {np.array2string(item.dynamic, precision=4)}\n"
+                     f"  analytic {np.array2string(item.analytic, precision=4)}\n"
+                     f"  error {item.error:.2e} (quasi-static secant {item.secant_error:.2e})")
+    return "\n".join(lines)
 
 
-if __name__ == "__main__":
-    raise SystemExit(main())
+def write(check: StaticCheck, directory: str | Path) -> Path:
+    """Write ``static_check.json`` (:meth:`StaticCheck.to_dict`) into ``directory``; returns its path."""
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    return write_json(directory / RESULT_FILE, check.to_dict())

@@ -4,20 +4,16 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
 from bearing_mbs.analysis import energy
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
+from bearing_mbs.io.figures import new_figure, save_figure
 
 
 def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[Path]:
     """Coordinates against time, trajectories, contact forces and energy (``spec`` is not needed)."""
     paths = []
-    fig, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 7))
+    fig, axes = new_figure(3, 1, sharex=True, figsize=(7, 7))
     for i, body in enumerate(scene.bodies):
         for c, (axis, label) in enumerate(zip(axes, ("x [m]", "y [m]", "θ [rad]"))):
             axis.plot(result.time, result.position[:, 3 * i + c], label=body.name)
@@ -25,9 +21,9 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
     axes[0].legend()
     axes[-1].set_xlabel("time [s]")
     fig.suptitle(f"{scene.name}: coordinates ({result.engine} {result.method})")
-    paths.append(_save(fig, directory / "coordinates.png"))
+    paths.append(save_figure(fig, directory / "coordinates.png"))
 
-    fig, axis = plt.subplots(figsize=(6, 5))
+    fig, axis = new_figure(figsize=(6, 5))
     for i, body in enumerate(scene.bodies):
         axis.plot(result.position[:, 3 * i], result.position[:, 3 * i + 1], label=body.name)
     axis.set_aspect("equal", adjustable="datalim")
@@ -35,10 +31,10 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
     axis.set_ylabel("y [m]")
     axis.legend()
     axis.set_title(f"{scene.name}: trajectories")
-    paths.append(_save(fig, directory / "trajectory.png"))
+    paths.append(save_figure(fig, directory / "trajectory.png"))
 
     if scene.pairs:
-        fig, axis = plt.subplots(figsize=(7, 4))
+        fig, axis = new_figure(figsize=(7, 4))
         forces = result.pair_series("normal_force")
         for k, pair in enumerate(scene.pairs):
             if forces[:, k].max() > 0:
@@ -47,21 +43,14 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
         axis.set_ylabel("normal force [N]")
         axis.legend(fontsize="small")
         axis.set_title(f"{scene.name}: contact forces at output instants")
-        paths.append(_save(fig, directory / "contact_forces.png"))
+        paths.append(save_figure(fig, directory / "contact_forces.png"))
 
-    fig, axis = plt.subplots(figsize=(7, 4))
+    fig, axis = new_figure(figsize=(7, 4))
     for name, series in energy(scene, result).items():
         axis.plot(result.time, series, label=name)
     axis.set_xlabel("time [s]")
     axis.set_ylabel("energy [J]")
     axis.legend()
     axis.set_title(f"{scene.name}: energy")
-    paths.append(_save(fig, directory / "energy.png"))
+    paths.append(save_figure(fig, directory / "energy.png"))
     return paths
-
-
-def _save(fig, path: Path) -> Path:
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path

@@ -1,4 +1,4 @@
-r"""Figures of a bearing run, in the style of the skidding literature (matplotlib, Agg canvas, no screen needed).
+r"""Figures of a bearing run, in the style of the skidding literature (matplotlib, no screen needed).
 
 * ``cage_slip.png``: inner-ring and cage speeds [rpm] and the cage slip :math:`1 - \omega_c/\omega_{c,epi}` [%]
   against time, the epicyclic (no-slip) cage speed :math:`\omega_{c,epi} = \omega_i (1 - D_w/D_{pw})/2` taken at
@@ -12,7 +12,7 @@ r"""Figures of a bearing run, in the style of the skidding literature (matplotli
 :func:`animate` draws a GIF of the bearing (rings, cage, rollers with a spin mark coloured by their load); it is
 written only on request (``bearing-mbs run --animate``). All quantities come from
 :mod:`bearing_mbs.models.cylindrical_roller.metrics`; nothing here computes physics. Figures use matplotlib's object-oriented API
-on an Agg canvas, so drawing never changes the global backend.
+(:mod:`bearing_mbs.io.figures`), so drawing never changes the global backend.
 """
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.metrics import (
     cage_speed,
     load_distribution,
@@ -52,7 +53,7 @@ def bearing_figures(spec, scene, result, directory) -> list[Path]:
     paths = []
     for name, draw in drawers:
         figure = draw(spec, scene, result)
-        paths.append(_save(figure, directory / name))
+        paths.append(save_figure(figure, directory / name, dpi=DPI))
     log.info("%s: wrote %d figures to %s", scene.name, len(paths), directory)
     return paths
 
@@ -70,7 +71,7 @@ def cage_slip_series(spec, scene, result) -> np.ndarray:
 def plot_cage_slip(spec, scene, result):
     """Speeds [rpm] (top) and cage slip [%] (bottom) against time [s]; the analysis window is shaded."""
     geometry = BearingGeometry.from_spec(spec.bearing)
-    figure, (speeds, slip) = _figure(2, 1, figsize=(7.0, 5.5), sharex=True)
+    figure, (speeds, slip) = new_figure(2, 1, figsize=(7.0, 5.5), sharex=True)
     time = result.time
     speeds.plot(time, result.velocity[:, 2] * RPM_PER_RAD_S, label="inner ring")
     speeds.plot(time, cage_speed(scene, result) * RPM_PER_RAD_S, label="cage")
@@ -93,9 +94,9 @@ def plot_roller_loads(spec, scene, result):
     """Inner-raceway roller load [N] against orbital angle [deg] over the analysis window."""
     mask = window(spec, result)
     angles = np.degrees(roller_orbit_angles(scene, result)[mask]).ravel()
-    forces = result.pair_series("normal_force")[mask][:, pair_columns(scene, "-inner_race")].ravel()
+    forces = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].ravel()
     centres, means = load_distribution(scene, result, mask, 2 * roller_indices(scene).size)
-    figure, axis = _figure(figsize=(7.0, 4.0))
+    figure, axis = new_figure(figsize=(7.0, 4.0))
     axis.plot(angles, forces, ".", color="C0", alpha=0.08, markersize=2, label="samples")
     axis.plot(centres, means, "o-", color="C1", label="mean per bin")
     axis.axvline(np.mod(spec.load.angle, 360.0), color="grey", linestyle=":", label="radial load direction")
@@ -115,7 +116,7 @@ def plot_slip_map(spec, scene, result):
     finite = np.abs(ratios[np.isfinite(ratios)])
     limit = float(np.percentile(finite, SLIP_MAP_PERCENTILE)) if finite.size else 1.0
     limit = limit if limit > 0 else 1.0
-    figure, axis = _figure(figsize=(7.5, 4.0))
+    figure, axis = new_figure(figsize=(7.5, 4.0))
     rollers = np.arange(ratios.shape[1] + 1) - 0.5
     mesh = axis.pcolormesh(_cell_edges(result.time), rollers, ratios.T, cmap="RdBu_r", vmin=-limit, vmax=limit,
                            shading="flat", rasterized=True)
@@ -132,7 +133,7 @@ def plot_inner_ring_orbit(spec, scene, result):
     """Path of the inner-ring centre [µm]: the whole run faint, the analysis window bold, its mean marked."""
     mask = window(spec, result)
     x, y = 1e6 * result.position[:, 0], 1e6 * result.position[:, 1]
-    figure, axis = _figure(figsize=(5.5, 5.0))
+    figure, axis = new_figure(figsize=(5.5, 5.0))
     axis.plot(x, y, color="C0", alpha=0.3, linewidth=0.8, label="whole run")
     axis.plot(x[mask], y[mask], color="C0", linewidth=1.2, label="analysis window")
     axis.plot(x[mask].mean(), y[mask].mean(), "+", color="C3", markersize=12, label="window mean")
@@ -163,13 +164,13 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
     geometry = BearingGeometry.from_spec(spec.bearing)
     instants = np.unique(np.linspace(0, result.time.size - 1, max(int(frames), 1)).round().astype(int))
     rollers = roller_indices(scene)
-    loads = result.pair_series("normal_force")[:, pair_columns(scene, "-inner_race")]
+    loads = result.pair_series("normal_force")[:, pair_columns(scene, "inner_race")]
     colours = ScalarMappable(Normalize(0.0, max(float(loads[window(spec, result)].max()), 1e-300)), "viridis")
     names = [body.name for body in scene.bodies]
     cage = names.index("cage") if "cage" in names else None
     r_w, r_i = geometry.roller_diameter / 2, geometry.inner_race_diameter / 2
 
-    figure, axis = _figure(figsize=(5.0, 5.4))
+    figure, axis = new_figure(figsize=(5.0, 5.4))
     reach = 1.08 * geometry.outer_race_diameter / 2
     axis.set_xlim(-reach, reach)
     axis.set_ylim(-reach, reach)
@@ -211,23 +212,6 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
     movie = animation.FuncAnimation(figure, draw, frames=instants.size, blit=False)
     movie.save(path, writer=animation.PillowWriter(fps=fps), dpi=80)
     log.info("%s: wrote %d animation frames to %s", scene.name, instants.size, path)
-    return path
-
-
-def _figure(rows: int = 1, columns: int = 1, **options):
-    """A figure on its own Agg canvas and its axes (one or an array)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    figsize = options.pop("figsize", None)
-    figure = Figure(figsize=figsize)
-    FigureCanvasAgg(figure)
-    return figure, figure.subplots(rows, columns, **options)
-
-
-def _save(figure, path: Path) -> Path:
-    figure.tight_layout()
-    figure.savefig(path, dpi=DPI)
     return path
 
 

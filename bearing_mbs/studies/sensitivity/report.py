@@ -8,14 +8,11 @@ import math
 import re
 from pathlib import Path
 
-import matplotlib
 import matplotlib.ticker
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
+from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.studies.sensitivity.analysis import Indices
 from bearing_mbs.studies.sensitivity.study import Study
 
@@ -23,6 +20,8 @@ REPORT_FILE = "report.md"
 RUNS_FILE = "runs.csv"
 #: Runs listed inline in the report (all are in runs.csv).
 INLINE_RUNS = 20
+#: Resolution of the report's figures [dots per inch].
+FIGURE_DPI = 110
 
 _HEADINGS = {
     "morris": {"mu_star": "μ*", "mu_star_conf": "± (μ*)", "mu": "μ", "sigma": "σ"},
@@ -138,7 +137,7 @@ def _runs_section(study: Study, table: pd.DataFrame, h: str) -> list[str]:
 def _morris_figure(result: Indices, directory: Path) -> str:
     from SALib.plotting.morris import covariance_plot
 
-    fig, ax = plt.subplots(figsize=(6, 5))
+    fig, ax = new_figure(figsize=(6, 5))
     covariance_plot(ax, result.result)
     ax.errorbar(result.result["mu_star"], result.result["sigma"], xerr=result.result["mu_star_conf"],
                 fmt="none", ecolor="0.5", lw=1)
@@ -146,25 +145,24 @@ def _morris_figure(result: Indices, directory: Path) -> str:
         ax.annotate(name, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
     ax.set_xlim(0, 1.3 * max(np.max(result.result["mu_star"]), 1e-300))
     ax.set_title(f"Morris: {result.output}")
-    return _save(fig, directory / f"morris_{_slug(result.output)}.png")
+    return save_figure(fig, directory / f"morris_{_slug(result.output)}.png", dpi=FIGURE_DPI).name
 
 
 def _bar_figure(result: Indices, directory: Path) -> str:
     from SALib.plotting.bar import plot as barplot
 
-    fig, ax = plt.subplots(figsize=(1.2 * len(result.names) + 3, 4))
+    fig, ax = new_figure(figsize=(1.2 * len(result.names) + 3, 4))
     barplot(result.to_df(), ax=ax)
     ax.set_title(f"{result.analyzer}: {result.output}")
     ax.tick_params(axis="x", labelrotation=20)
-    fig.tight_layout()
-    return _save(fig, directory / f"{result.analyzer}_{_slug(result.output)}.png")
+    return save_figure(fig, directory / f"{result.analyzer}_{_slug(result.output)}.png", dpi=FIGURE_DPI).name
 
 
 def _scatter_figure(study: Study, table: pd.DataFrame, output: str, directory: Path) -> str:
     n = len(study.parameters)
     columns = min(n, 4)
     rows = math.ceil(n / columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(3.2 * columns, 2.8 * rows), squeeze=False, sharey=True)
+    fig, axes = new_figure(rows, columns, figsize=(3.2 * columns, 2.8 * rows), squeeze=False, sharey=True)
     ok = table["status"] == "success"
     for ax, p in zip(axes.ravel(), study.parameters):
         ax.scatter(table.loc[ok, p.name], table.loc[ok, output], s=8, c="k")
@@ -180,14 +178,7 @@ def _scatter_figure(study: Study, table: pd.DataFrame, output: str, directory: P
     for ax in axes.ravel()[n:]:
         ax.set_visible(False)
     fig.suptitle(f"{study.name}: {output}" + (" (x at 0: runs without a value)" if (~ok).any() else ""))
-    fig.tight_layout()
-    return _save(fig, directory / f"scatter_{_slug(output)}.png")
-
-
-def _save(fig, path: Path) -> str:
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path.name
+    return save_figure(fig, directory / f"scatter_{_slug(output)}.png", dpi=FIGURE_DPI).name
 
 
 def _fmt(value) -> str:

@@ -19,13 +19,13 @@ import datetime
 import fcntl
 import json
 import logging
-import math
 import os
 import shutil
 import sqlite3
 from pathlib import Path
 
 from bearing_mbs import __version__
+from bearing_mbs.io.json import json_safe, write_json
 from bearing_mbs.spec import SpecError
 from bearing_mbs.studies.sensitivity.runs import ERROR, Run
 
@@ -103,7 +103,7 @@ class RunStore:
             "worker": outcome.get("worker"),
             "finished_at": datetime.datetime.now(datetime.UTC).isoformat(timespec="milliseconds"),
             "error": outcome.get("error"),
-            "summary": _json_safe(outcome.get("summary")),
+            "summary": json_safe(outcome.get("summary")),
             "inputs": run.inputs,
             "version": __version__,
         }
@@ -113,9 +113,9 @@ class RunStore:
         if temporary.exists():
             shutil.rmtree(temporary)
         temporary.mkdir()
-        _write_json(temporary / RUN_FILE, row)
+        write_json(temporary / RUN_FILE, row)
         if row["summary"] is not None:
-            _write_json(temporary / SUMMARY_FILE, row["summary"])
+            write_json(temporary / SUMMARY_FILE, row["summary"])
         for name, content in (outcome.get("files") or {}).items():
             (temporary / name).write_bytes(content)
         if final.exists():  # replacing an errored run (retry_errors): old directory out of the way first
@@ -204,17 +204,3 @@ class RunStore:
 
     def count(self) -> int:
         return self._db.execute("SELECT COUNT(*) FROM runs").fetchone()[0]
-
-
-def _write_json(path: Path, data) -> None:
-    path.write_text(json.dumps(data, indent=2, allow_nan=False) + "\n")
-
-
-def _json_safe(value):
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if isinstance(value, dict):
-        return {k: _json_safe(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_json_safe(v) for v in value]
-    return value

@@ -1,7 +1,8 @@
-"""The load-distribution figure: roller loads against azimuth (matplotlib, Agg canvas, no screen needed).
+"""The load-distribution figure: roller loads against azimuth (matplotlib, no screen needed).
 
-Uses the object-oriented API with an Agg canvas, so drawing never changes the global matplotlib backend;
-matplotlib is imported on the first call only, which keeps ``import bearing_mbs.models.cylindrical_roller.quasistatic`` light.
+Uses the object-oriented API (:mod:`bearing_mbs.io.figures`), so drawing never changes the global matplotlib
+backend; matplotlib is imported on the first call only, which keeps
+``import bearing_mbs.models.cylindrical_roller.quasistatic`` light.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.quasistatic.planar import RadialSolution
 from bearing_mbs.models.cylindrical_roller.quasistatic.sliced import SlicedSolution
 
@@ -20,16 +22,10 @@ def plot_load_distribution(solution: RadialSolution | SlicedSolution, path: str 
     Azimuths are wrapped to (−180°, 180°]; dashed lines mark the continuous loaded zone ±ψ_l around the
     displacement direction when the solution provides it (planar model).
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     angles = np.degrees(np.angle(np.exp(1j * solution.roller_angles)))
     order = np.argsort(angles)
-    figure = Figure(figsize=(7.0, 4.0))
-    FigureCanvasAgg(figure)
-    axis = figure.add_subplot()
+    figure, axis = new_figure(figsize=(7.0, 4.0))
     axis.plot(angles[order], solution.inner_loads[order], "o-", label="inner contact")
     if np.any(solution.outer_loads != solution.inner_loads):
         axis.plot(angles[order], solution.outer_loads[order], "s--", label="outer contact")
@@ -47,6 +43,4 @@ def plot_load_distribution(solution: RadialSolution | SlicedSolution, path: str 
     axis.set_title(title or f"load distribution: Z = {solution.rollers.rollers}, F = ({fx:.4g}, {fy:.4g}) N")
     axis.grid(True, alpha=0.3)
     axis.legend()
-    figure.tight_layout()
-    figure.savefig(path, dpi=120)
-    return path
+    return save_figure(figure, path, dpi=120)

@@ -1,0 +1,175 @@
+"""Subcommands of the studies: ``convergence``, ``numerics-report``, ``stability``, ``static-check``,
+``skidding`` and ``cage-models``."""
+
+from __future__ import annotations
+
+from bearing_mbs.cli.options import add_overrides, names, numbers
+from bearing_mbs.models import load_spec
+from bearing_mbs.spec import SpecError
+
+
+def register(commands) -> dict:
+    """Add the subcommands to ``commands`` (argparse subparsers); returns {name: handler}."""
+    _add_convergence(commands)
+    _add_stability(commands)
+    _add_numerics_report(commands)
+    _add_static_check(commands)
+    _add_skidding(commands)
+    _add_cage_models(commands)
+    return {"convergence": _convergence, "stability": _stability, "numerics-report": _numerics_report,
+            "static-check": _static_check, "skidding": _skidding, "cage-models": _cage_models}
+
+
+def _add_convergence(commands) -> None:
+    convergence = commands.add_parser(
+        "convergence", help="work-precision study: error against run time for the settings in [convergence]")
+    convergence.add_argument("scenario", help="scenario TOML file with a [convergence] section")
+    convergence.add_argument("--out", required=True, help="output directory; re-running skips finished runs")
+    add_overrides(convergence, "override any spec field (repeatable)")
+    convergence.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def _convergence(args) -> int:
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.studies.convergence import study
+
+    summary = study(load_spec(args.scenario, args.set), args.out, ProgressMeter() if args.quiet else TqdmProgress())
+    for target, best in summary["cheapest"].items():
+        setting = "not reached" if best is None else (
+            f"{best['engine']} {best['solver']} step={best['step'] or '-'} tolerance={best['tolerance'] or '-'} "
+            f"({float(best['wall_time_s']):.3g} s)")
+        print(f"{summary['norm']} error <= {target}: {setting}")
+    return 0
+
+
+def _add_stability(commands) -> None:
+    stability = commands.add_parser(
+        "stability", help="stability suite: which solver survives stiff and extreme variations, up to which step")
+    stability.add_argument("scenario", help="bearing scenario TOML file, the base of the variations")
+    stability.add_argument("--out", required=True, help="output directory; re-running skips finished cells")
+    stability.add_argument("--reduced", action="store_true", help="the reduced suite of the default tests")
+    stability.add_argument("--cases", help="comma-separated case names (default: all; see docs/numerics.md)")
+    stability.add_argument("--solvers", help="comma-separated engine/method pairs, e.g. reference/rk4,exudyn/rk44")
+    add_overrides(stability, "override any spec field of the base scenario (repeatable)")
+    stability.add_argument("--no-figures", action="store_true", help="skip the heat map")
+
+
+def _stability(args) -> int:
+    """Exit 0: written (failing cells are results, not errors); 2: bad input."""
+    from bearing_mbs.studies import stability
+
+    cases = stability.REDUCED_CASES if args.reduced else stability.CASE_NAMES
+    solvers = stability.REDUCED_SOLVERS if args.reduced else stability.SOLVERS
+    if args.cases:
+        cases = tuple(name.strip() for name in args.cases.split(","))
+    if args.solvers:
+        solvers = tuple(tuple(item.strip().split("/", 1)) for item in args.solvers.split(","))
+        for item in solvers:
+            if len(item) != 2:
+                raise SpecError("--solvers", "/".join(item), "must be engine/method pairs")
+    summary = stability.study(load_spec(args.scenario, args.set), args.out, cases=cases, solvers=solvers,
+                              figures=not args.no_figures)
+    fraction = summary["fraction_within_factor_2"]
+    print(f"{summary['scenario']}: {summary['cells']} cells; advisor within a factor of 2 of the measured limit in "
+          f"{summary['within_factor_2']} of {summary['explicit_cells_measured']} explicit cells"
+          + (f" ({100 * fraction:.0f} %)" if fraction is not None else "") + f" -> {args.out}")
+    return 0
+
+
+def _add_numerics_report(commands) -> None:
+    report = commands.add_parser(
+        "numerics-report", help="figure and tables of cheapest sound settings from a convergence study's results")
+    report.add_argument("study", help="output directory of a bearing-mbs convergence study (with convergence.csv)")
+    report.add_argument("--name", required=True, help="scenario name for titles and file names")
+    report.add_argument("--out", required=True, help="directory for work_precision_NAME.png and .md")
+    report.add_argument("--norms", default="cage_speed,slips", help="comma-separated norms to plot and tabulate")
+    report.add_argument("--document-step", type=float, default=1 / 1.8e6, metavar="H",
+                        help="the document's step for its scheme [s], starred (default 1/1.8e6 s)")
+
+
+def _numerics_report(args) -> int:
+    """Exit 0: written; 2: bad input (no convergence.csv, an unknown norm)."""
+    from bearing_mbs.studies.numerics_report import run
+
+    norms = names(args.norms)
+    print(run(args.study, args.name, args.out, norms, args.document_step))
+    return 0
+
+
+def _add_static_check(commands) -> None:
+    check = commands.add_parser(
+        "static-check", help="settled dynamic equilibria and stiffness against the quasi-static solution")
+    check.add_argument("scenario", help="bearing scenario TOML file (the repository's: scenarios/static_check.toml)")
+    check.add_argument("--out", required=True, help="output directory: static_check.json")
+    check.add_argument("--engines", default="exudyn,reference", help="comma-separated engines to check")
+    check.add_argument("--loads", default="5e3,20e3,68e3",
+                       help="comma-separated external loads [N] along the scenario's [load] angle")
+    check.add_argument("--stiffness-load", type=float, default=20e3, metavar="N",
+                       help="load [N] of the finite-difference stiffness (default 20e3)")
+    check.add_argument("--no-stiffness", action="store_true", help="skip the finite-difference stiffness")
+    add_overrides(check, "override any spec field of the scenario (repeatable)")
+
+
+def _static_check(args) -> int:
+    """Exit 0: every equilibrium settled; 1: some run stopped early or did not settle (all are written);
+    2: bad input, nothing ran."""
+    from bearing_mbs.studies import static_check
+
+    engines = names(args.engines)
+    check = static_check.run(args.scenario, numbers("--loads", args.loads), engines, overrides=args.set,
+                             stiffness_load=None if args.no_stiffness else args.stiffness_load)
+    path = static_check.write(check, args.out)
+    print(static_check.report(check))
+    print(f"-> {path}")
+    settled = all(c.equilibrium.settled for c in check.comparisons) and all(s.settled for s in check.stiffness)
+    return 0 if settled else 1
+
+
+def _add_skidding(commands) -> None:
+    skidding = commands.add_parser("skidding", help="cage slip against radial load, per cage model")
+    skidding.add_argument("scenario", help="bearing scenario TOML file at constant speed, the base of the sweep")
+    skidding.add_argument("--out", required=True, help="output directory: skidding_vs_load.{csv,md,png}")
+    skidding.add_argument("--loads", default="68000,6800,2000,680,200", help="comma-separated radial loads [N]")
+    skidding.add_argument("--cages", default="penalty,constraint", help="comma-separated cage models")
+    add_overrides(skidding, "override any spec field of the base scenario, e.g. scenario.end_time=0.3 (repeatable)")
+    skidding.add_argument("--no-figures", action="store_true", help="skip the PNG figure")
+    skidding.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def _skidding(args) -> int:
+    """Exit 0: every run succeeded; 1: some stopped early (all are written); 2: bad input, nothing ran."""
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.studies import skidding
+
+    cages = names(args.cages)
+    for name in cages:
+        if name not in skidding.CAGES:
+            raise SpecError("--cages", name, f"must be among {', '.join(skidding.CAGES)}")
+    sweeps = skidding.run(load_spec(args.scenario, args.set), args.out, numbers("--loads", args.loads),
+                          {name: skidding.CAGES[name] for name in cages}, figures=not args.no_figures,
+                          progress=ProgressMeter() if args.quiet else TqdmProgress())
+    print(skidding.markdown_table(sweeps))
+    print(skidding.trend_text(sweeps) + f"-> {args.out}")
+    return 0 if all(row["status"] == "success" for rows in sweeps.values() for row in rows) else 1
+
+
+def _add_cage_models(commands) -> None:
+    cages = commands.add_parser("cage-models", help="compare the penalty, constraint and no-cage models")
+    cages.add_argument("scenario", help="bearing scenario TOML file, the base of the comparison")
+    cages.add_argument("--out", required=True, help="output directory: cage_models.{md,csv} and two figures")
+    cages.add_argument("--no-roller-guided", action="store_true",
+                       help="only the three cage models, without the two roller-guided runs")
+    add_overrides(cages, "override any spec field of the base scenario (repeatable)")
+    cages.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
+    cages.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def _cage_models(args) -> int:
+    """Exit 0: every run succeeded; 1: some stopped early (all are written); 2: bad input, nothing ran."""
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.studies import cage_models
+
+    rows = cage_models.run(load_spec(args.scenario, args.set), args.out, roller_guided=not args.no_roller_guided,
+                           figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
+    print(cage_models.markdown_table(rows) + f"-> {args.out}")
+    return 0 if all(row["status"] == "success" for row in rows) else 1

@@ -1,0 +1,259 @@
+r"""Cage slip against radial load: does the cage skid more as the load falls?
+
+Field measurements on wind-turbine high-speed-shaft bearings and the skidding literature say it does: the rollers
+and cage are slowed by load-independent drag, while the traction that drives them scales with the load (Jain &
+Hunt 2011, Jain 2012, Han, Li & Chu 2018). In the model the load-independent drag is Palmgren's M0 on the rollers
+(``[lubricant]``).
+
+``bearing-mbs skidding SCENARIO.toml --out DIR`` runs :func:`run`: the base scenario (a bearing at constant
+speed, e.g. ``scenarios/seed_hss_steady.toml``) at each radial load of :data:`LOADS` with each cage model of
+:data:`CAGES`; it writes ``skidding_vs_load.csv`` (a row per run, :data:`COLUMNS`), ``skidding_vs_load.md`` (the
+table and the trend of each cage) and ``skidding_vs_load.png`` (cage slip against load, log axes). The total
+radial load on the bearing is the applied load plus the weight of the inner ring and its supported shaft mass.
+
+The penalty cage's slip averaged over a window of duration T is only resolved to about
+:func:`pocket_play_resolution`: the cage may shift by the pocket clearance H relative to the rollers, an angle of
+about 2H/(D_pw/2), whatever the true slip. The constraint cage has no play (resolution 0).
+"""
+
+from __future__ import annotations
+
+import csv
+import logging
+from pathlib import Path
+
+import numpy as np
+
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.metrics import window
+from bearing_mbs.runner import run_spec, summarize
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.spec.fields import positive
+from bearing_mbs.studies.common import with_overrides
+
+log = logging.getLogger(__name__)
+
+#: Radial loads [N]: the seed bearing's nominal 68 kN down to 0.3 % of it.
+LOADS = (68000.0, 6800.0, 2000.0, 680.0, 200.0)
+#: Cage models swept by :func:`sweep`, each with the fields that select it.
+CAGES = {
+    "penalty": {"cage.model": "penalty"},
+    "constraint": {"cage.model": "constraint"},
+}
+#: A load counts as settled when the means of its window's two halves differ by less than the pocket-play
+#: resolution of a half window (penalty cage) plus this fraction of the window mean.
+SETTLED_FRACTION = 0.2
+#: Output file names (in the output directory).
+CSV_FILE, TABLE_FILE, FIGURE_FILE = "skidding_vs_load.csv", "skidding_vs_load.md", "skidding_vs_load.png"
+
+COLUMNS = ("cage_model", "radial_load", "total_load", "load_fraction", "cage_slip", "cage_slip_first_half",
+           "cage_slip_second_half", "resolution", "settled", "max_roller_slip_inner", "max_roller_load",
+           "max_pocket_force", "max_cage_eccentricity", "wall_time_s", "steps", "status", "warnings")
+
+
+def check_base(base: Spec, loads) -> None:
+    """Raise :class:`SpecError` unless ``base`` is a bearing scenario and every load [N] is positive."""
+    if base.scenario.model != "bearing":
+        raise SpecError("scenario.model", base.scenario.model, "the skidding sweep varies a bearing scenario")
+    if not loads:
+        raise SpecError("loads", loads, "at least one radial load is needed")
+    for load in loads:
+        positive("loads", load)
+
+
+def sweep_loads(base: Spec, loads=LOADS, progress: ProgressMeter | None = None) -> list[dict]:
+    """Run ``base`` at each radial load of ``loads`` [N] with its own cage model; one row per load (keys:
+    :data:`COLUMNS`): loads [N], cage slip (window mean and its two halves) [-], the resolution of the window
+    [-], largest inner-raceway slip ratio [-], largest roller and pocket force [N], largest cage eccentricity
+    [m], cost and status. ``load_fraction`` is the load over the base scenario's."""
+    check_base(base, loads)
+    rows = []
+    for load in loads:
+        spec = with_overrides(base, {"load.radial": float(load)})
+        scene, result = run_spec(spec, progress)
+        rows.append(sweep_row(spec, scene, result, base.load.radial))
+        log.info("%s cage, %g N: cage slip %.4g (%s)", spec.cage.model, load, rows[-1]["cage_slip"],
+                 rows[-1]["status"])
+    return rows
+
+
+def sweep(base: Spec, loads=LOADS, cages: dict[str, dict] | None = None,
+          progress: ProgressMeter | None = None) -> dict[str, list[dict]]:
+    """:func:`sweep_loads` for each cage model of ``cages`` (name -> fields that select it; default
+    :data:`CAGES`): {cage model: rows}."""
+    cages = CAGES if cages is None else cages
+    check_base(base, loads)
+    variants = {name: with_overrides(base, selection) for name, selection in cages.items()}  # validated first
+    return {name: sweep_loads(spec, loads, progress) for name, spec in variants.items()}
+
+
+def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
+    """One row of the sweep (see :func:`sweep_loads`)."""
+    summary = summarize(spec, scene, result)
+    mask = window(spec, result)
+    slip = cage_slip_series(spec, scene, result)[mask]
+    first, second = (float(np.nanmean(half)) for half in np.array_split(slip, 2))
+    duration = float(result.time[mask][-1] - result.time[mask][0])
+    tolerance = pocket_play_resolution(spec, duration / 2) + SETTLED_FRACTION * abs(summary["cage_slip"])
+    return {
+        "cage_model": spec.cage.model,
+        "radial_load": spec.load.radial,
+        "total_load": total_radial_load(spec),
+        "load_fraction": spec.load.radial / nominal_load if nominal_load else float("nan"),
+        "cage_slip": summary["cage_slip"],
+        "cage_slip_first_half": first,
+        "cage_slip_second_half": second,
+        "resolution": pocket_play_resolution(spec, duration),
+        "settled": bool(abs(first - second) <= tolerance),
+        "max_roller_slip_inner": summary["max_roller_slip_inner"],
+        "max_roller_load": summary["max_roller_load"],
+        "max_pocket_force": summary["max_pocket_force"],
+        "max_cage_eccentricity": summary["max_cage_eccentricity"],
+        "wall_time_s": summary["wall_time_s"],
+        "steps": summary["steps"],
+        "status": summary["status"],
+        "warnings": "; ".join(summary.get("warnings") or ()),
+    }
+
+
+def total_radial_load(spec: Spec) -> float:
+    """|applied radial load + weight of the inner ring and supported mass| [N] (constant-load scenarios)."""
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    angle = np.radians(spec.load.angle)
+    force = spec.load.radial * np.array([np.cos(angle), np.sin(angle)])
+    force[1] -= geometry.inner_ring_mass * spec.scenario.gravity
+    return float(np.hypot(*force))
+
+
+def pocket_play_resolution(spec: Spec, duration: float) -> float:
+    """Apparent cage slip [-] that the pocket clearance alone can produce over ``duration`` [s]: the cage's angle
+    relative to the roller set varies by up to 2H/(D_pw/2), against the epicyclic angle ω_c,epi · duration.
+    Zero for the constraint cage (its angle is locked to the rollers) and without a cage."""
+    if spec.cage.model != "penalty":
+        return 0.0
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    inner_speed = spec.drive.speed_rpm * 2 * np.pi / 60
+    travel = geometry.epicyclic_cage_speed(inner_speed) * duration
+    return float(2 * geometry.pocket_clearance / (geometry.pitch_diameter / 2) / travel)
+
+
+def trend(rows: list[dict]) -> dict:
+    """Is the cage slip larger at lower load? ``monotone``: it grows at every step down in load;
+    ``ratio``: slip at the lowest load over slip at the highest; ``margin``: their difference over the
+    resolution of the window (inf for a cage without play)."""
+    ordered = sorted(rows, key=lambda row: -row["radial_load"])
+    slips = np.array([row["cage_slip"] for row in ordered])
+    return {
+        "monotone": bool(np.all(np.diff(slips) > 0)),
+        "ratio": float(slips[-1] / slips[0]) if slips[0] != 0 else float("inf"),
+        "margin": float((slips[-1] - slips[0]) / max(row["resolution"] for row in ordered))
+        if any(row["resolution"] for row in ordered) else float("inf"),
+    }
+
+
+def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str = "") -> Path:
+    """Cage slip [%] against total radial load [N], one curve per cage model (log axes), with the halves of
+    each window as a bar and, around the penalty curve, the pocket-play resolution of the window as a band;
+    the largest inner-raceway slip ratio below."""
+    figure, (cage, rollers) = new_figure(2, 1, figsize=(6.5, 6.0), sharex=True)
+    styles = {"penalty": ("C0", "o"), "constraint": ("C1", "s")}
+    all_slips = []
+    for n, (name, rows) in enumerate(sweeps.items()):
+        color, marker = styles.get(name, (f"C{n + 2}", "^"))
+        rows = sorted(rows, key=lambda row: row["total_load"])
+        load = np.array([row["total_load"] for row in rows])
+        slip = 100 * np.array([row["cage_slip"] for row in rows])
+        halves = 100 * np.array([[row["cage_slip_first_half"], row["cage_slip_second_half"]] for row in rows])
+        resolution = 100 * np.array([row["resolution"] for row in rows])
+        all_slips.extend([*slip, *halves.ravel()])
+        if resolution.any():
+            cage.fill_between(load, np.clip(slip - resolution, 1e-6, None), slip + resolution, color=color,
+                              alpha=0.15, linewidth=0,
+                              label=f"{name}: ± pocket-play resolution ({resolution.max():.2g} %)")
+        cage.vlines(load, halves.min(axis=1), halves.max(axis=1), color=color, alpha=0.6, linewidth=2)
+        cage.plot(load, slip, marker + "-", color=color, label=f"{name} cage (bars: window halves)")
+        rollers.plot(load, [row["max_roller_slip_inner"] or np.nan for row in rows], marker + "-", color=color,
+                     label=f"{name} cage")
+    cage.set_yscale("log" if min(all_slips) > 0 else "symlog")
+    cage.set_ylabel("cage slip [%]")
+    cage.legend(fontsize="small", loc="lower left")
+    rollers.set_ylabel("largest inner-raceway\nslip ratio [-]")
+    rollers.set_yscale("log")
+    rollers.legend(fontsize="small", loc="lower left")
+    rollers.set_xlabel("total radial load on the bearing [N] (applied + inner-ring and shaft weight)")
+    rollers.set_xscale("log")
+    loads = [row["total_load"] for rows in sweeps.values() for row in rows]
+    rollers.set_xlim(min(loads) / 1.5, max(loads) * 1.5)
+    for axis in (cage, rollers):
+        axis.grid(True, which="both", alpha=0.3)
+    cage.set_title(title)
+    return save_figure(figure, path, dpi=100)
+
+
+def markdown_table(sweeps: dict[str, list[dict]]) -> str:
+    """All rows as a Markdown table (slips in %)."""
+    lines = ["| cage | radial load [N] | total load [N] | cage slip [%] | window halves [%] | resolution [%] | "
+             "settled | largest inner-raceway slip ratio | max roller load [N] | max pocket force [N] | "
+             "max cage eccentricity [µm] | wall [s] |",
+             "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"]
+    for name, rows in sweeps.items():
+        for row in rows:
+            lines.append(
+                f"| {name} | {row['radial_load']:g} | {row['total_load']:.0f} | {100 * row['cage_slip']:.3g} | "
+                f"{100 * row['cage_slip_first_half']:.3g}, {100 * row['cage_slip_second_half']:.3g} | "
+                f"{100 * row['resolution']:.3g} | {'yes' if row['settled'] else 'no'} | "
+                f"{row['max_roller_slip_inner'] or float('nan'):.3g} | {row['max_roller_load']:.0f} | "
+                f"{row['max_pocket_force'] or float('nan'):.0f} | "
+                f"{1e6 * (row['max_cage_eccentricity'] or float('nan')):.0f} | {row['wall_time_s']:.1f} |")
+    return "\n".join(lines) + "\n"
+
+
+def trend_text(sweeps: dict[str, list[dict]]) -> str:
+    """One line per cage model: :func:`trend` in words."""
+    lines = []
+    for name, rows in sweeps.items():
+        found = trend(rows)
+        lines.append(f"{name} cage: slip {'grows' if found['monotone'] else 'does not grow'} at every step down "
+                     f"in load; lowest-load / highest-load slip {found['ratio']:.3g}; difference "
+                     f"{found['margin']:.3g} × the pocket-play resolution")
+    return "\n".join(lines) + "\n"
+
+
+def write(sweeps: dict[str, list[dict]], directory: str | Path, title: str = "", figures: bool = True) -> list[Path]:
+    """Write the CSV, the Markdown table with the trends and (``figures``) the figure into ``directory``;
+    returns their paths."""
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    table = directory / CSV_FILE
+    with table.open("w", newline="") as handle:
+        writer = csv.DictWriter(handle, COLUMNS)
+        writer.writeheader()
+        for rows in sweeps.values():
+            writer.writerows(rows)
+    markdown = directory / TABLE_FILE
+    markdown.write_text(markdown_table(sweeps) + "\n" + trend_text(sweeps))
+    paths = [table, markdown]
+    if figures:
+        paths.append(plot_slip_against_load(sweeps, directory / FIGURE_FILE, title))
+    return paths
+
+
+def run(base: Spec, directory: str | Path, loads=LOADS, cages: dict[str, dict] | None = None,
+        figures: bool = True, progress: ProgressMeter | None = None) -> dict[str, list[dict]]:
+    """:func:`sweep` the base scenario, then :func:`write` the outputs into ``directory``; returns the rows
+    by cage model. Rows that did not settle or carry warnings are logged."""
+    sweeps = sweep(base, loads, cages, progress)
+    title = (f"{base.scenario.name}: {base.drive.speed_rpm:g} rpm, cage guidance "
+             f"{base.bearing.cage_guidance}")
+    write(sweeps, directory, title, figures)
+    for name, rows in sweeps.items():
+        for row in rows:
+            if not row["settled"]:
+                log.warning("%s cage, %g N: the cage slip has not settled (window halves %.3g, %.3g)", name,
+                            row["radial_load"], row["cage_slip_first_half"], row["cage_slip_second_half"])
+            if row["warnings"]:
+                log.warning("%s cage, %g N: %s", name, row["radial_load"], row["warnings"])
+    return sweeps

@@ -1,0 +1,106 @@
+"""The study subcommands of ``bearing-mbs``: skidding, cage-models, static-check and numerics-report.
+
+Smoke tests: each runs on a tiny case (a few milliseconds of simulated time on Exudyn's generalized-alpha, one
+load, one engine) and must exit with status 0 and write its files; bad input must exit with status 2 before
+anything runs (no output directory is created). The physics of these studies is checked elsewhere
+(tests/test_bearing_outputs.py, tests/test_static_check.py); here only the command line.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+import pytest
+
+from bearing_mbs.cli import main
+
+SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
+STEADY = SCENARIOS / "seed_hss_steady.toml"
+#: 4 ms of the seed bearing, analysed over the last 2 ms.
+TINY = ["--set", "scenario.end_time=0.004", "--set", "analysis.start=0.002"]
+
+
+def test_skidding_writes_the_sweep(tmp_path, capsys):
+    out = tmp_path / "skid"
+    code = main(["skidding", str(STEADY), "--out", str(out), "--loads", "68000,2000", "--cages", "constraint",
+                 "--quiet", *TINY])
+    assert code == 0
+    assert {path.name for path in out.iterdir()} == {"skidding_vs_load.csv", "skidding_vs_load.md",
+                                                     "skidding_vs_load.png"}
+    with (out / "skidding_vs_load.csv").open(newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert [(row["cage_model"], float(row["radial_load"])) for row in rows] == [("constraint", 68000.0),
+                                                                             ("constraint", 2000.0)]
+    assert "constraint cage: slip" in capsys.readouterr().out
+
+
+def test_cage_models_writes_the_table_and_figures(tmp_path):
+    out = tmp_path / "cages"
+    code = main(["cage-models", str(SCENARIOS / "cage_models.toml"), "--out", str(out), "--no-roller-guided",
+                 "--quiet", *TINY])
+    assert code == 0
+    assert {path.name for path in out.iterdir()} == {"cage_models.md", "cage_models.csv", "cage_models_slip.png",
+                                                     "cage_models_loads.png"}
+    assert len((out / "cage_models.md").read_text().strip().splitlines()) == 2 + 3
+
+
+def test_static_check_writes_its_json(tmp_path, capsys):
+    out = tmp_path / "static"
+    code = main(["static-check", str(SCENARIOS / "static_check.toml"), "--out", str(out), "--engines", "exudyn",
+                 "--loads", "20000", "--no-stiffness"])
+    assert code == 0
+    data = json.loads((out / "static_check.json").read_text())
+    assert [row["engine"] for row in data["static"]] == ["exudyn"] and data["stiffness"] == []
+    assert abs(data["static"][0]["displacement_error"]) < 1e-2
+    assert "Qmax dyn" in capsys.readouterr().out
+
+
+def test_numerics_report_writes_figure_and_tables(tmp_path):
+    study = tmp_path / "study"
+    study.mkdir()
+    columns = ("engine", "solver", "step", "tolerance", "error", "wall_time_s", "force_evaluations", "steps",
+               "status", "positions", "cage_speed", "roller_loads", "slips")
+    with (study / "convergence.csv").open("w", newline="") as handle:
+        writer = csv.DictWriter(handle, columns)
+        writer.writeheader()
+        for solver, step, time, error in (("central_difference", 5.555555555555556e-07, 2.0, 1e-3),
+                                          ("central_difference", 1.25e-07, 8.0, 5e-5),
+                                          ("rk4", 1e-7, 3.0, 1e-5), ("rk4", 5e-8, 6.0, 1e-6)):
+            writer.writerow({"engine": "reference", "solver": solver, "step": step, "tolerance": "",
+                             "error": error, "wall_time_s": time, "force_evaluations": 100, "steps": 10,
+                             "status": "success", "positions": error, "cage_speed": error, "roller_loads": error,
+                             "slips": error / 10})
+    out = tmp_path / "report"
+    assert main(["numerics-report", str(study), "--name", "tiny", "--out", str(out)]) == 0
+    assert {path.name for path in out.iterdir()} == {"work_precision_tiny.png", "work_precision_tiny.md"}
+    assert "cheapest sound setting" in (out / "work_precision_tiny.md").read_text()
+
+
+@pytest.mark.parametrize("arguments", [
+    ["skidding", str(STEADY), "--cages", "brass"],                                 # no such cage model
+    ["skidding", str(STEADY), "--loads", "68000,heavy"],                           # not a number
+    ["skidding", str(STEADY), "--loads", "-5"],                                    # not a positive load
+    ["skidding", str(SCENARIOS / "seed_case1.toml")],                              # not a bearing
+    ["cage-models", str(SCENARIOS / "cage_models.toml"), "--set", "cage.model=wooden"],
+    ["cage-models", str(SCENARIOS / "seed_case1.toml")],
+    ["static-check", str(SCENARIOS / "static_check.toml"), "--engines", "abaqus"],
+    ["static-check", str(SCENARIOS / "static_check.toml"), "--loads", "0"],
+    ["static-check", str(SCENARIOS / "seed_case1.toml")],
+    ["numerics-report", str(SCENARIOS), "--name", "none"],                        # no convergence.csv
+])
+def test_study_commands_reject_bad_input_with_exit_status_2(tmp_path, capsys, arguments):
+    out = tmp_path / "out"
+    assert main([*arguments, "--out", str(out)]) == 2
+    assert not out.exists()
+    assert "error:" in capsys.readouterr().err
+
+
+def test_numerics_report_rejects_an_unknown_norm(tmp_path, capsys):
+    study = tmp_path / "study"
+    study.mkdir()
+    (study / "convergence.csv").write_text("engine,solver,step,tolerance,error,wall_time_s,status\n")
+    assert main(["numerics-report", str(study), "--name", "x", "--out", str(tmp_path / "out"),
+                 "--norms", "energy"]) == 2
+    assert not (tmp_path / "out").exists()
