@@ -1,9 +1,10 @@
 """A scene as arrays, and the evaluation of all its forces by looping over the registered force elements.
 
-:func:`pack_scene` packs the contact pairs and every force-element kind present in the scene (registry order)
-into :class:`PackedScene`. :func:`scene_forces` (compiled) and :func:`scene_forces_twin` (numpy) add the forces
-of every kind; in compiled code each kind's parameters have their own type, and numba resolves, inlines and
-orders the calls to each kind's registered compiled function when it types the scene's tuple of kinds. Gravity and constraint forces are the engines' business.
+:func:`pack_scene` packs the contact pairs and every registered force-element kind (registry order) into
+:class:`PackedScene`. :func:`scene_forces` (compiled) and :func:`scene_forces_twin` (numpy) add the forces
+of every kind; in compiled code each kind's parameters have their own type: the built-in kinds are called one by
+one, and numba resolves, inlines and orders the calls to any kind registered from outside when it types the
+scene's tuple of kinds. Gravity and constraint forces are the engines' business.
 """
 
 from __future__ import annotations
@@ -17,7 +18,11 @@ from numba.extending import overload
 from bearing_mbs.core.scene import CONSTRAINT_KINDS, Scene
 from bearing_mbs.elements import contact_pairs
 from bearing_mbs.elements.contact_pairs import PairArrays
-from bearing_mbs.elements.registry import FORCE_ELEMENTS
+from bearing_mbs.elements.registry import BUILT_IN, FORCE_ELEMENTS, add_built_in_forces
+
+
+#: The built-in kinds lead the tuple of packed kinds; kinds registered from outside follow.
+BUILT_IN_COUNT = len(BUILT_IN)
 
 
 class ConstraintArrays(NamedTuple):
@@ -34,8 +39,10 @@ class ConstraintArrays(NamedTuple):
 class PackedScene(NamedTuple):
     """A scene as flat arrays. Coordinates are ordered body by body: (x, y, θ) of body 0, then body 1, …
 
-    ``elements`` holds the packed parameters of every force-element kind present, in registry order; the
-    contact pairs always come first and are also ``pairs`` (the engines update their per-pair state).
+    ``elements`` holds the packed parameters of every registered force-element kind, in registry order, with
+    empty arrays for a kind the scene does not have (a loop over no items costs nothing, and every scene then
+    has the same compiled type: one compilation of the integrators serves them all). The contact pairs come
+    first and are also ``pairs`` (the engines update their per-pair state).
     """
 
     inverse_mass: np.ndarray  # (3N,) 1/m, 1/m, 1/I; 0 on fixed coordinates
@@ -68,13 +75,11 @@ def pack_scene(scene: Scene) -> PackedScene:
     for item in scene.forces:
         FORCE_ELEMENTS.of_item(item)  # an unregistered kind is an error, not silently dropped
     pairs = contact_pairs.pack(scene.pairs)
-    elements = [pairs]
-    for element in FORCE_ELEMENTS.values():
-        items = scene.items_of(element.item_type)
-        if items and element is not contact_pairs.ELEMENT:
-            elements.append(element.pack(items))
+    # every registered kind, with no items where the scene has none: one compiled specialisation serves all scenes
+    elements = tuple(pairs if element is contact_pairs.ELEMENT else element.pack(scene.items_of(element.item_type))
+                     for element in FORCE_ELEMENTS.values())
     return PackedScene(inverse_mass=inverse_mass, gravity=gravity, pairs=pairs,
-                       constraints=_pack_constraints(scene.constraints), elements=tuple(elements))
+                       constraints=_pack_constraints(scene.constraints), elements=elements)
 
 
 def scene_counts(scene: Scene) -> dict:
@@ -108,8 +113,10 @@ def add_element_forces(elements, t, q, v, latched, forces, pair_out, power, comp
 
 @overload(add_element_forces, inline="always")
 def _add_element_forces_compiled(elements, t, q, v, latched, forces, pair_out, power, complete):
-    """Compiled form. A tuple of different kinds cannot be iterated in compiled code, so the first kind is added
-    and the rest of the tuple (a shorter tuple type) recurses, until it is empty; every level is inlined."""
+    """Compiled form, for the kinds registered from outside the package (the built-in ones are called directly,
+    :func:`~bearing_mbs.elements.registry.add_built_in_forces`). A tuple of different kinds cannot be iterated in
+    compiled code, so the first kind is added and the rest of the tuple (a shorter tuple type) recurses, until
+    it is empty; every level is inlined."""
     return _add_first_then_rest if len(elements) else _add_nothing
 
 
@@ -132,7 +139,8 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
     """
     forces[:] = 0.0
     power = np.zeros(2)
-    add_element_forces(packed.elements, t, q, v, latched, forces, pair_out, power, complete)
+    add_built_in_forces(packed.elements, t, q, v, latched, forces, pair_out, power, complete)
+    add_element_forces(packed.elements[BUILT_IN_COUNT:], t, q, v, latched, forces, pair_out, power, complete)
     return power[0], power[1]
 
 

@@ -1,10 +1,28 @@
-"""The registered force-element kinds, in evaluation order. Adding a kind: its module, and one entry here (or
-``FORCE_ELEMENTS.register(element)`` from outside the package)."""
+"""The registered force-element kinds, in evaluation order. Adding a kind inside the package: its module, an entry
+in :data:`BUILT_IN` and the matching call in :func:`add_built_in_forces`, side by side below. From outside the
+package: ``FORCE_ELEMENTS.register(element)``, nothing else."""
 
 from __future__ import annotations
+
+import numba
 
 from bearing_mbs.core.force_element import ForceElementRegistry
 from bearing_mbs.elements import contact_pairs, drags, loads, servos
 
 #: Contact pairs first (their per-pair state and outputs), then loads, drives and drags.
-FORCE_ELEMENTS = ForceElementRegistry((contact_pairs.ELEMENT, loads.ELEMENT, servos.ELEMENT, drags.ELEMENT))
+BUILT_IN = (contact_pairs.ELEMENT, loads.ELEMENT, servos.ELEMENT, drags.ELEMENT)
+FORCE_ELEMENTS = ForceElementRegistry(BUILT_IN)
+
+
+@numba.njit(cache=True, inline="always")
+def add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, complete):
+    """The compiled forces of the built-in kinds, ``elements[0:4]`` in the order of :data:`BUILT_IN`.
+
+    Written out call by call: numba cannot loop over a tuple of different types, and a generic unrolling
+    (:func:`bearing_mbs.elements.assembly.add_element_forces`, used for kinds registered from outside) costs
+    several times the compile time of these direct, inlined calls.
+    """
+    contact_pairs.add_forces(elements[0], t, q, v, latched, forces, pair_out, power, complete)
+    loads.add_forces(elements[1], t, q, v, latched, forces, pair_out, power, complete)
+    servos.add_forces(elements[2], t, q, v, latched, forces, pair_out, power, complete)
+    drags.add_forces(elements[3], t, q, v, latched, forces, pair_out, power, complete)
