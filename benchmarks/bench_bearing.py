@@ -1,6 +1,6 @@
 """One shaft revolution of seed_hss_steady (penalty cage, 1500 rpm, 68 kN) on every engine, in one run.
 
-Figures (issue 3): wall time per revolution of
+Figures: wall time per revolution of
 * Exudyn generalized-alpha, compiled connector, at the step that holds the cage speed to 0.1 % (``GA_STEP``,
   from the work–precision study in docs/numerics.md), and the same with the python connector;
 * Exudyn RK44 (explicit), compiled connector, and the reference engine's RK4, at the same explicit step

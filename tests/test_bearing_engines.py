@@ -1,6 +1,6 @@
 """The bearing on both engines, and its energy audit.
 
-References and tolerances (issue 3 acceptance):
+References and tolerances:
 * Exudyn (generalized-alpha, h = 1e-5 s, compiled connector) against the reference engine (RK4,
   h = 1.25e-7 s, below its explicit friction limit of about 2.3e-7 s at this load): cage speed within 0.5 %,
   maximum roller load within 1 %, for the penalty and the constraint cage, over the same window of the

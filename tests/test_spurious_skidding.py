@@ -1,4 +1,4 @@
-"""The spurious-skidding trap (EXUDYN_NOTES.md, ARCHITECTURE.md): RK4 above the friction stability limit stays
+"""The spurious-skidding trap (docs/numerics.md): RK4 above the friction stability limit stays
 bounded but slips wrongly, and the guards catch it.
 
 Case: the seed bearing at its nominal 68 kN (scenarios/seed_hss_steady.toml), erf friction with μ = 0.1 and

@@ -3,7 +3,7 @@
 References and tolerances:
 * the ladder walk, on a fake runner with a known threshold: the largest passing rung and the first failing one
   are found exactly;
-* acceptance of issue 4: the advisor's explicit limit is within a factor of 2 of the measured limit in at least
+* the advisor's explicit limit is within a factor of 2 of the measured limit in at least
   90 % of the measured cells, for the reduced suite (5 cases × 3 explicit reference integrators, about a minute)
   and for the full suite (19 cases × 7 solvers, marked slow; about 15 minutes on 2 shared cores);
 * the measured limit is bracketed by the energy audit and the spurious-slip comparison, not only by NaN: on the

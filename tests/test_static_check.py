@@ -1,4 +1,4 @@
-"""The dynamic bearing model against the quasi-static solution (issue 5; issue 3's steady-running acceptance),
+"""The dynamic bearing model against the quasi-static solution (and the steady-running check),
 and the ``bearing-mbs stiffness`` command.
 
 Reference everywhere: :func:`bearing_mbs.models.cylindrical_roller.quasistatic.solve_radial`, document 003's displacement method with

@@ -54,7 +54,7 @@ References
   5th ed., vol. 1), CRC Press, 2006: ch. 6 (line-contact deformation, :math:`K = 8.06\cdot10^4 l^{8/9}`) and
   ch. 7 (series combination of inner and outer contacts).
 * S. Pater, T. Mitran, A. Cocaina, "Calculul matricii de rigiditate a rulmentilor radiali", Univ. of Oradea
-  (document 003), eqs. 12–16; see ``SECONDARY_DOCUMENTS.md`` §3.2.
+  (document 003), eqs. 12–16; its errata and the slice-law constant: ``docs/quasistatic.md``.
 """
 
 from __future__ import annotations

@@ -12,7 +12,7 @@ can be placed between the raceways without touching them is recognised by the sl
   .. math:: h(z) = R - \sqrt{R^2 - (|z| - L_r/2)^2}\quad\text{for } |z| \ge L_r/2,\ \text{else } 0.
 
   The printed eq. 13 reads :math:`R - \sqrt{R - (z - L_r/2)^2}`, which is not a length and is not even in
-  :math:`z` (``SECONDARY_DOCUMENTS.md`` §3.2). The drop is continuous with a continuous slope at
+  :math:`z` (the errata in ``docs/quasistatic.md``). The drop is continuous with a continuous slope at
   :math:`|z| = L_r/2`.
 * :class:`LogarithmicCrown`: Lundberg's logarithmic profile with the Johns–Gohar / Fujiwara–Kawase
   end-drop modification,
@@ -27,7 +27,7 @@ can be placed between the raceways without touching them is recognised by the sl
 
 References
 ----------
-* S. Pater, T. Mitran, A. Cocaina, document 003, eq. 13; ``SECONDARY_DOCUMENTS.md`` §3.2.
+* S. Pater, T. Mitran, A. Cocaina, document 003, eq. 13 (errata: ``docs/quasistatic.md``).
 * G. Lundberg, "Elastische Berührung zweier Halbräume", Forschung auf dem Gebiete des Ingenieurwesens 10
   (1939) 201–211.
 * P. M. Johns, R. Gohar, "Roller bearings under radial and eccentric loads", Tribology International 14
