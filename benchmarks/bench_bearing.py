@@ -14,10 +14,9 @@ from __future__ import annotations
 
 import math
 
-from common import write
+from common import SCENARIOS, write
 
 from bearing_mbs.models import build_scene
-from cases import SCENARIOS
 from bearing_mbs.engines import simulate
 from bearing_mbs.models import load_spec
 

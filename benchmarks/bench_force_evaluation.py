@@ -11,11 +11,9 @@ Ratios are to the compiled kernel in the same run; compare ratios, not seconds, 
 from __future__ import annotations
 
 import numpy as np
-from common import best_of, write
+from common import SCENARIOS, best_of, write
 
-from bearing_mbs.models import build_scene
-from cases import seed_spec
-from bearing_mbs.contact import kernel, twin
+from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate
 from bearing_mbs.elements import pack_scene, scene_forces, scene_forces_twin
@@ -70,3 +68,8 @@ def main() -> dict:
 
 if __name__ == "__main__":
     main()
+
+
+def seed_spec(case: int, overrides: list[str]):
+    """The primary document's case ``case`` (``scenarios/seed_caseN.toml``) with ``--set``-style overrides."""
+    return load_spec(SCENARIOS / f"seed_case{case}.toml", overrides)

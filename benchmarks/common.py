@@ -10,6 +10,12 @@ import time
 from importlib import metadata
 from pathlib import Path
 
+from bearing_mbs._numba_cache import invalidate_if_stale
+
+#: The repository's scenario files.
+SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
+invalidate_if_stale()  # the benchmarks are an entry point: check numba's cache once, before anything compiles
+
 OUT = Path(__file__).resolve().parent / "out"
 
 

@@ -21,6 +21,7 @@ import argparse
 import logging
 import sys
 
+from bearing_mbs._numba_cache import invalidate_if_stale
 from bearing_mbs.cli import runs, studies
 from bearing_mbs.spec import SpecError
 
@@ -30,6 +31,7 @@ def main(argv: list[str] | None = None) -> int:
     commands = parser.add_subparsers(dest="command", required=True)
     handlers = {**runs.register(commands), **studies.register(commands)}
     args = parser.parse_args(argv)
+    invalidate_if_stale()  # once per process, before anything compiles (never at import)
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
     try:
         return handlers[args.command](args)
