@@ -68,6 +68,7 @@ from bearing_mbs.studies.stability_cases import (  # noqa: F401  (re-exported: t
     Case,
 )
 from bearing_mbs.studies.stability_report import advised_figure, heat_map, markdown, summarize
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.studies.table import append_row, read_rows, text
 
 log = logging.getLogger(__name__)
@@ -144,15 +145,13 @@ class WallClockBudget(ProgressMeter):
             raise BudgetExceeded(f"over {self.seconds:g} s")
 
 
-def failure_reason(message: str) -> str:
-    """The guard that stopped a run, from its message."""
-    if "non-finite" in message:
-        return "NaN"
-    if "faster than speed_limit" in message:
-        return "blow-up"
-    if "penetrates" in message:
-        return "penetration"
-    return "solver failure"
+#: The label of each kind of stop in the study's tables.
+FAILURE_LABELS = {Failure.NONFINITE: "NaN", Failure.BLOWUP: "blow-up", Failure.PENETRATION: "penetration"}
+
+
+def failure_reason(failure: Failure) -> str:
+    """The guard that stopped a run, from its failure kind."""
+    return FAILURE_LABELS.get(failure, "solver failure")
 
 
 class CellRunner:
@@ -197,7 +196,7 @@ class CellRunner:
                 probe = Probe(setting, "ok", audit=energy_balance_error(self.scene, result), wall_time_s=wall,
                               steps=result.stats.steps, result=result)
             else:
-                probe = Probe(setting, "failed", failure_reason(result.message), wall_time_s=wall,
+                probe = Probe(setting, "failed", failure_reason(result.failure), wall_time_s=wall,
                               steps=result.stats.steps, message=result.message)
         self.probes[key] = probe
         log.info("%s %s %s=%.3g: %s %s", self.engine, self.method, "tolerance" if self.adaptive else "step",

@@ -166,8 +166,7 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
     rollers = roller_indices(scene)
     loads = result.pair_series("normal_force")[:, pair_columns(scene, "inner_race")]
     colours = ScalarMappable(Normalize(0.0, max(float(loads[window(spec, result)].max()), 1e-300)), "viridis")
-    names = [body.name for body in scene.bodies]
-    cage = names.index("cage") if "cage" in names else None
+    cage = scene.topology.body("cage") if scene.topology.has("cage") else None
     r_w, r_i = geometry.roller_diameter / 2, geometry.inner_race_diameter / 2
 
     figure, axis = new_figure(figsize=(5.0, 5.4))
