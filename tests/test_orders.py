@@ -16,7 +16,6 @@ from scipy.integrate import solve_ivp
 
 from bearing_mbs.models import build_scene
 from cases import ball_in_ring_scene, seed_spec
-from bearing_mbs.contact import twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.engines import simulate
 from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
