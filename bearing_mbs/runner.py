@@ -8,17 +8,17 @@ from __future__ import annotations
 import logging
 from pathlib import Path
 
-from bearing_mbs.models import MODELS, build_scene
-from bearing_mbs.engines import simulate
-from bearing_mbs.numerics.advisor import step_warning
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
-from bearing_mbs.spec import Spec, to_mapping
-from bearing_mbs.spec.solver import SolverSpec
 from bearing_mbs.elements import scene_counts
+from bearing_mbs.engines import simulate
 from bearing_mbs.io.json import json_safe as _json_safe
 from bearing_mbs.io.json import write_json
+from bearing_mbs.models import MODELS, build_scene
+from bearing_mbs.numerics.advisor import step_warning
+from bearing_mbs.spec import Spec, to_mapping
+from bearing_mbs.spec.solver import SolverSpec
 
 log = logging.getLogger(__name__)
 

@@ -14,11 +14,10 @@ from __future__ import annotations
 
 import math
 
-from common import SCENARIOS, write
-
-from bearing_mbs.models import build_scene
 from bearing_mbs.engines import simulate
-from bearing_mbs.models import load_spec
+from bearing_mbs.models import build_scene, load_spec
+
+from common import SCENARIOS, write
 
 REVOLUTION = 2 * math.pi / (1500 * 2 * math.pi / 60)  # 0.04 s
 GA_STEP = 1e-5

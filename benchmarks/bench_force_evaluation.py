@@ -11,12 +11,13 @@ Ratios are to the compiled kernel in the same run; compare ratios, not seconds, 
 from __future__ import annotations
 
 import numpy as np
-from common import SCENARIOS, best_of, write
 
-from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
-from bearing_mbs.engines import simulate
 from bearing_mbs.elements import pack_scene, scene_forces, scene_forces_twin
+from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene, load_spec
+
+from common import SCENARIOS, best_of, write
 
 END_TIME, STEP = 0.02, 1e-6  # the first ball–floor contacts fall inside the window
 

@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from bearing_mbs.models.building import pair_law
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, Scene
-from bearing_mbs.spec import ContactSpec, Spec
 from bearing_mbs.models import load_spec, spec_from_mapping
+from bearing_mbs.models.building import pair_law
+from bearing_mbs.spec import ContactSpec, Spec
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 

@@ -48,6 +48,7 @@ from bearing_mbs.numerics.advisor import Advice, advise, step_warning
 from bearing_mbs.numerics.stability_regions import RK_TABLEAUS, axis_limits, mode_limit, stability_polynomial
 from bearing_mbs.runner import simulate_advised
 from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
+
 from cases import SCENARIOS, seed_spec
 
 NOMINAL = SCENARIOS / "seed_hss_steady.toml"

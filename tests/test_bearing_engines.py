@@ -25,14 +25,14 @@ References and tolerances:
 import numpy as np
 import pytest
 
+from bearing_mbs.analysis import energy_balance_error
+from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller import metrics as skidding
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
-from bearing_mbs.analysis import energy_balance_error
-from bearing_mbs.models import build_scene
-from cases import SCENARIOS
-from bearing_mbs.engines import simulate
 from bearing_mbs.runner import summarize
-from bearing_mbs.models import load_spec
+
+from cases import SCENARIOS
 
 SHORT = ["scenario.end_time=0.02", "analysis.start=0.01", "solver.output_interval=1e-4"]
 ENGINES = {

@@ -35,13 +35,13 @@ import numpy as np
 import pytest
 
 from bearing_mbs.cli import main as cli_main
-from bearing_mbs.models.cylindrical_roller.figures import animate, bearing_figures
-from bearing_mbs.runner import run_spec, write_outputs
 from bearing_mbs.models import load_spec
-from bearing_mbs.studies import cage_models, skidding
+from bearing_mbs.models.cylindrical_roller.figures import animate, bearing_figures
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.metrics import cage_speed, pair_columns, window
 from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, solve_radial
+from bearing_mbs.runner import run_spec, write_outputs
+from bearing_mbs.studies import cage_models, skidding
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 STEADY = SCENARIOS / "seed_hss_steady.toml"

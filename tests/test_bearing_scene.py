@@ -15,16 +15,16 @@ import math
 import numpy as np
 import pytest
 
-from bearing_mbs.models import build_scene
-from cases import SCENARIOS
 from bearing_mbs.contact import twin
-from bearing_mbs.models.cylindrical_roller.drivetrain import GearTrain
-from bearing_mbs.engines.reference.constraints import constraint_rows
-from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
-from bearing_mbs.spec import SpecError
-from bearing_mbs.models import load_spec, spec_from_mapping
-from bearing_mbs.models.cylindrical_roller.spec import GearTrainSpec
 from bearing_mbs.elements import Load, VelocityServo, pack_scene, scene_counts
+from bearing_mbs.engines.reference.constraints import constraint_rows
+from bearing_mbs.models import build_scene, load_spec, spec_from_mapping
+from bearing_mbs.models.cylindrical_roller.drivetrain import GearTrain
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.spec import GearTrainSpec
+from bearing_mbs.spec import SpecError
+
+from cases import SCENARIOS
 
 STEADY = SCENARIOS / "seed_hss_steady.toml"
 Z = 15

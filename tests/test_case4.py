@@ -12,9 +12,10 @@ friction: the document's dead zone is discontinuous, which generalized-alpha can
 import numpy as np
 import pytest
 
-from bearing_mbs.models import build_scene
-from cases import seed_spec
 from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene
+
+from cases import seed_spec
 
 WINDOW = ["scenario.end_time=0.3", "contact.wall.friction_law=erf", "contact.ball.friction_law=erf"]
 RADIUS = 0.005

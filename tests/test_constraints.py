@@ -13,9 +13,10 @@ import numpy as np
 import pytest
 
 from bearing_mbs.analysis import constraint_violation
-from bearing_mbs.models import build_scene
-from cases import DUMBBELL, dumbbell_spec, seed_spec
 from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene
+
+from cases import DUMBBELL, dumbbell_spec, seed_spec
 
 
 def dumbbell_error(engine, method, step):

@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 from bearing_mbs.core.failures import Failure
-
-from bearing_mbs.models import build_scene
-from cases import seed_spec
 from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene
+
+from cases import seed_spec
 
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 

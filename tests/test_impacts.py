@@ -16,9 +16,10 @@ import pytest
 from test_laws import PAPER_DAMPING_FACTOR, expected_restitution
 
 from bearing_mbs.analysis import energy, restitution_effective
-from bearing_mbs.models import build_scene
-from cases import seed_spec, single_impact_spec
 from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene
+
+from cases import seed_spec, single_impact_spec
 
 SOLVERS = {
     "reference rk4": {"engine": "reference", "reference": {"method": "rk4", "step": 1e-6}},

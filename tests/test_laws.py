@@ -24,7 +24,6 @@ from scipy.optimize import brentq
 
 from bearing_mbs.contact import friction, normal
 
-
 #: Damping factor d(e) of each hysteresis law, from the cited papers' formulas (independent of the package).
 PAPER_DAMPING_FACTOR = {
     # H. M. Lankarani, P. E. Nikravesh, J. Mech. Des. 112 (1990) 369–376: D = 3K(1 − e²)/(4 δ̇⁻)

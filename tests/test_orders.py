@@ -14,12 +14,13 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from bearing_mbs.models import build_scene
-from cases import ball_in_ring_scene, seed_spec
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
-from bearing_mbs.engines import simulate
-from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
 from bearing_mbs.elements import pack_scene, scene_forces_twin
+from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene
+from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
+
+from cases import ball_in_ring_scene, seed_spec
 
 END_TIME = 0.05
 

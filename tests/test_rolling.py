@@ -16,9 +16,10 @@ import numpy as np
 import pytest
 
 from bearing_mbs.analysis import energy
-from bearing_mbs.models import build_scene
-from cases import seed_spec
 from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene
+
+from cases import seed_spec
 
 MASS, RADIUS, SPEED, G = 0.1, 0.005, 0.2, 10.0
 INERTIA = 0.4 * MASS * RADIUS**2

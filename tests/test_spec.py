@@ -8,11 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from bearing_mbs.models import build_scene
 from bearing_mbs.cli import main
 from bearing_mbs.contact.normal import NORMAL_LAWS
+from bearing_mbs.models import build_scene, load_spec, spec_from_mapping
 from bearing_mbs.spec import SpecError, to_mapping
-from bearing_mbs.models import load_spec, spec_from_mapping
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 CASE3 = SCENARIOS / "seed_case3.toml"

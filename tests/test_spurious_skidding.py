@@ -24,12 +24,11 @@ import re
 
 import pytest
 
-from bearing_mbs.models import build_scene
-from cases import SCENARIOS
-from bearing_mbs.runner import simulate_advised
-from bearing_mbs.runner import summarize
-from bearing_mbs.models import load_spec
+from bearing_mbs.models import build_scene, load_spec
+from bearing_mbs.runner import simulate_advised, summarize
 from bearing_mbs.studies.spurious_slip import check_spurious_slip
+
+from cases import SCENARIOS
 
 END = 2e-3
 FRICTION = [f"contact.{group}.{key}={value}" for group in ("inner_race", "outer_race", "pocket")

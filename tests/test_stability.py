@@ -15,7 +15,6 @@ import math
 
 import pytest
 
-from cases import SCENARIOS
 from bearing_mbs.core.failures import Failure
 from bearing_mbs.models import load_spec
 from bearing_mbs.studies import stability
@@ -28,6 +27,8 @@ from bearing_mbs.studies.stability import (
     walk,
 )
 from bearing_mbs.studies.table import read_rows
+
+from cases import SCENARIOS
 
 BASE = SCENARIOS / "seed_hss_steady.toml"
 

@@ -123,8 +123,8 @@ def _advise(args) -> int:
     """Exit 0: advice printed (and, with --check-slip, the slip converged); 1: spurious slip found; 2: bad input."""
     import json
 
-    from bearing_mbs.numerics.advisor import advise
     from bearing_mbs.models import build_scene
+    from bearing_mbs.numerics.advisor import advise
 
     spec = load_with_engine(args)
     scene = build_scene(spec)

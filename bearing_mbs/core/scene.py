@@ -13,6 +13,7 @@ velocities (vx, vy [m/s], ω [rad/s]). Body index −1 in a pair or constraint m
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+
 import numpy as np
 
 from bearing_mbs.contact.kinematics import PAIR_KINDS

@@ -20,7 +20,6 @@ from bearing_mbs.elements import contact_pairs
 from bearing_mbs.elements.contact_pairs import PairArrays
 from bearing_mbs.elements.registry import BUILT_IN, FORCE_ELEMENTS, add_built_in_forces
 
-
 #: The built-in kinds lead the tuple of packed kinds; kinds registered from outside follow.
 BUILT_IN_COUNT = len(BUILT_IN)
 

@@ -7,8 +7,8 @@ import numpy as np
 from bearing_mbs.contact import twin
 from bearing_mbs.contact.normal import DAMPING_FACTOR
 from bearing_mbs.core.scene import PairLaw, Scene
-from bearing_mbs.spec import ContactSpec, SpecError
 from bearing_mbs.elements import pack_scene
+from bearing_mbs.spec import ContactSpec, SpecError
 
 
 def pair_law(contact: ContactSpec, stiffness: float | None = None, exponent: float | None = None) -> PairLaw:

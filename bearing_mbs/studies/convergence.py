@@ -27,12 +27,12 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.models import build_scene
-from bearing_mbs.engines import simulate
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
+from bearing_mbs.engines import simulate
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import write_json
+from bearing_mbs.models import build_scene
 from bearing_mbs.spec import Spec, SpecError, to_mapping
 from bearing_mbs.spec.convergence import RunSettings
 from bearing_mbs.studies.common import resample_result, solver_at

@@ -90,8 +90,8 @@ def compare_slips(scene: Scene, run: Result, reference: Result, load_fraction: f
 def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, result: Result | None = None,
                         refinement: float = 2.0, progress=None) -> SlipCheck:
     """Run ``scene`` at the refined step (and at the given step unless ``result`` is that run) and compare."""
-    from bearing_mbs.numerics.advisor import advise
     from bearing_mbs.engines import simulate
+    from bearing_mbs.numerics.advisor import advise
 
     if result is None:
         result = simulate(scene, solver, end_time, progress)

@@ -46,13 +46,13 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.numerics.advisor import advise
 from bearing_mbs.analysis import energy_balance_error
-from bearing_mbs.models import build_scene
-from bearing_mbs.engines import simulate
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.engines import simulate
 from bearing_mbs.io.json import write_json
-from bearing_mbs.models import spec_from_mapping
+from bearing_mbs.models import build_scene, spec_from_mapping
+from bearing_mbs.numerics.advisor import advise
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.studies.common import refined_setting, solver_at, spec_mapping, with_overrides
 from bearing_mbs.studies.spurious_slip import compare_slips
@@ -68,7 +68,6 @@ from bearing_mbs.studies.stability_cases import (  # noqa: F401  (re-exported: t
     Case,
 )
 from bearing_mbs.studies.stability_report import advised_figure, heat_map, markdown, summarize
-from bearing_mbs.core.failures import Failure
 from bearing_mbs.studies.table import append_row, read_rows, text
 
 log = logging.getLogger(__name__)

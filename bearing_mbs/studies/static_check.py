@@ -58,11 +58,11 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.io.json import write_json
-from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.models import load_spec
 from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
-from bearing_mbs.spec.fields import in_range, one_of, positive, require
 from bearing_mbs.models.cylindrical_roller.stiffness import quasi_static_load, require_bearing, solve_scenario
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.spec.fields import in_range, one_of, positive, require
 
 log = logging.getLogger(__name__)
 

@@ -18,8 +18,8 @@ import numpy as np
 
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.core.scene import GROUND, Scene
-from bearing_mbs.spec.fields import SpecError
 from bearing_mbs.elements import scene_forces, scene_forces_twin
+from bearing_mbs.spec.fields import SpecError
 
 LINE_AS_SPHERE_RADIUS = 1e6
 

@@ -25,20 +25,20 @@ import numpy as np
 
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.contact.state import advance_pair_state, initial_pair_state
-from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.failures import Failure
+from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import DistanceConstraint, Scene
-from bearing_mbs.spec.fields import SpecError
-from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
+from bearing_mbs.elements import pack_scene, scene_forces
+from bearing_mbs.engines.diagnosis import diverged_message, output_grid, penetration_message
 from bearing_mbs.engines.exudyn.connectors import (
     ForceConnector,
     add_native_contacts,
     check_native,
     without_pairs,
 )
-from bearing_mbs.engines.diagnosis import diverged_message, output_grid, penetration_message
-from bearing_mbs.elements import pack_scene, scene_forces
+from bearing_mbs.spec.fields import SpecError
+from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
 
 
 def check_supported(scene: Scene, solver: SolverSpec) -> None:

@@ -6,9 +6,9 @@ import math
 
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, DistanceConstraint, Scene
 from bearing_mbs.core.topology import Topology
-from bearing_mbs.spec import Spec
 from bearing_mbs.models.balls.spec import COORDINATES
 from bearing_mbs.models.building import pair_law, reject_initial_overlap
+from bearing_mbs.spec import Spec
 
 
 def ball_name(spec: Spec, index: int) -> str:

@@ -2,7 +2,13 @@
 
 from __future__ import annotations
 
-from bearing_mbs.analysis import constraint_violation, energy, energy_balance_error, max_penetration, restitution_effective
+from bearing_mbs.analysis import (
+    constraint_violation,
+    energy,
+    energy_balance_error,
+    max_penetration,
+    restitution_effective,
+)
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 

@@ -26,6 +26,10 @@ from bearing_mbs.contact.line_contact import (
     effective_modulus,
     palmgren_stiffness,
 )
+from bearing_mbs.core.scene import GROUND, Body, ContactPair, PointOnLineConstraint, Profile, Scene
+from bearing_mbs.core.topology import Topology
+from bearing_mbs.elements import Drag, Load, VelocityServo
+from bearing_mbs.models.building import initial_gaps, pair_law
 from bearing_mbs.models.cylindrical_roller.drivetrain import (
     RPM,
     GearTrain,
@@ -35,11 +39,7 @@ from bearing_mbs.models.cylindrical_roller.drivetrain import (
 )
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.lubrication import palmgren_drag_moment, roller_drag_coefficient
-from bearing_mbs.core.scene import GROUND, Body, ContactPair, PointOnLineConstraint, Profile, Scene
-from bearing_mbs.core.topology import Topology
-from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.spec import Spec, SpecError
-from bearing_mbs.models.building import initial_gaps, pair_law
 
 #: The primary document's raceway laws K δ^1.3 (annex II: KI, KE, NI = NE).
 DOCUMENT_STIFFNESS = {"inner_race": 3e10, "outer_race": 4e10}

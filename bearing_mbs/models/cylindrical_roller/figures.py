@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.metrics import (
     cage_speed,
     load_distribution,
@@ -32,7 +33,6 @@ from bearing_mbs.models.cylindrical_roller.metrics import (
     slip_ratios,
     window,
 )
-from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 
 log = logging.getLogger(__name__)
 

@@ -25,8 +25,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.analysis import energy_balance_error
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 
 
 def window(spec, result) -> np.ndarray:

@@ -23,8 +23,8 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from bearing_mbs.spec import SpecError, apply_override, read_toml, to_mapping
 from bearing_mbs.models import spec_from_mapping
+from bearing_mbs.spec import SpecError, apply_override, read_toml, to_mapping
 from bearing_mbs.spec.loading import parse_override
 
 RESULT_FILE = "result.npz"

@@ -38,10 +38,16 @@ from bearing_mbs.contact.line_contact import (
     series_inner_share,
     series_stiffness,
 )
-from bearing_mbs.spec.fields import SpecError
 from bearing_mbs.models.cylindrical_roller.quasistatic.ring import solve_ring
-from bearing_mbs.models.cylindrical_roller.quasistatic.rollers import NewtonSettings, RollerLoads, RollerSet, check_speed, check_vector
+from bearing_mbs.models.cylindrical_roller.quasistatic.rollers import (
+    NewtonSettings,
+    RollerLoads,
+    RollerSet,
+    check_speed,
+    check_vector,
+)
 from bearing_mbs.models.cylindrical_roller.quasistatic.roots import decreasing_root
+from bearing_mbs.spec.fields import SpecError
 
 #: Load-distribution integral J_r(0.5) of a zero-clearance line-contact bearing (n = 10/9), used only for
 #: the first guess of the displacement; the tests compute it independently.

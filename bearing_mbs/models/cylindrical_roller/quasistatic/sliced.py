@@ -61,12 +61,18 @@ from bearing_mbs.contact.line_contact import (
     slice_coefficient,
     sliced_contact,
 )
-from bearing_mbs.spec.fields import SpecError, require
 from bearing_mbs.models.cylindrical_roller.quasistatic.planar import first_guess, require_load_or_preload
 from bearing_mbs.models.cylindrical_roller.quasistatic.profiles import CircularCrown, Flat, LogarithmicCrown
 from bearing_mbs.models.cylindrical_roller.quasistatic.ring import ARMIJO, MAX_DOUBLINGS, regularised_solve, solve_ring
-from bearing_mbs.models.cylindrical_roller.quasistatic.rollers import NewtonSettings, RollerLoads, RollerSet, check_speed, check_vector
+from bearing_mbs.models.cylindrical_roller.quasistatic.rollers import (
+    NewtonSettings,
+    RollerLoads,
+    RollerSet,
+    check_speed,
+    check_vector,
+)
 from bearing_mbs.models.cylindrical_roller.quasistatic.roots import decreasing_root
+from bearing_mbs.spec.fields import SpecError, require
 
 PROFILES = (Flat, CircularCrown, LogarithmicCrown)
 MAX_SLICES = 10000
