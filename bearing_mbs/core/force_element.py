@@ -27,11 +27,13 @@ Body index −1 is the ground. All quantities are SI.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from bearing_mbs.core.registry import Registry
 
 
 def no_potential_energy(parameters, position: np.ndarray, pair_output: np.ndarray) -> None:
@@ -69,44 +71,24 @@ class ForceElement:
         return (item.body_a, item.body_b)
 
 
-class ForceElementRegistry(Mapping):
+class ForceElementRegistry(Registry[ForceElement]):
     """Force-element kinds in evaluation order, by name. :meth:`register` adds a kind from outside the package;
-    the order of registration is the order of evaluation (and so of floating-point accumulation)."""
+    the order of registration is the order of evaluation (and so of floating-point accumulation). A kind's name,
+    item type and parameter type are each its own."""
 
-    def __init__(self, elements: Iterable[ForceElement] = ()):
-        self._elements: dict[str, ForceElement] = {}
-        for element in elements:
-            self.register(element)
-
-    def register(self, element: ForceElement) -> ForceElement:
-        for other in self._elements.values():
-            if other is not element and (other.name == element.name or other.item_type is element.item_type
-                                         or other.parameters is element.parameters):
-                raise ValueError(f"force element {element.name!r} clashes with the registered {other.name!r}")
-        self._elements[element.name] = element
-        return element
-
-    def unregister(self, name: str) -> None:
-        self._elements.pop(name, None)
+    def clashes(self, element: ForceElement, other: ForceElement) -> bool:
+        return (other.name == element.name or other.item_type is element.item_type
+                or other.parameters is element.parameters)
 
     def of_item(self, item) -> ForceElement:
-        for element in self._elements.values():
+        for element in self.values():
             if isinstance(item, element.item_type):
                 return element
         raise TypeError(f"{type(item).__name__} is not a registered force element; registered: "
-                        f"{', '.join(e.item_type.__name__ for e in self._elements.values())}")
+                        f"{', '.join(e.item_type.__name__ for e in self.values())}")
 
     def of_parameters(self, parameters_type: type) -> ForceElement:
-        for element in self._elements.values():
+        for element in self.values():
             if element.parameters is parameters_type:
                 return element
         raise TypeError(f"no registered force element packs {parameters_type.__name__}")
-
-    def __getitem__(self, name: str) -> ForceElement:
-        return self._elements[name]
-
-    def __iter__(self):
-        return iter(self._elements)
-
-    def __len__(self) -> int:
-        return len(self._elements)

@@ -7,11 +7,12 @@ advisor) are attributes of its package that the layers above look up when they n
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from bearing_mbs.core.registry import Registry
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 
@@ -42,28 +43,5 @@ class Model:
     linearise: Callable[[Scene], Any] | None = None
 
 
-class ModelRegistry(Mapping):
+class ModelRegistry(Registry[Model]):
     """Models by name. :meth:`register` adds one from outside the package (a plug-in, or a test)."""
-
-    def __init__(self, models: Iterable[Model] = ()):
-        self._models: dict[str, Model] = {}
-        for model in models:
-            self.register(model)
-
-    def register(self, model: Model) -> Model:
-        if model.name in self._models and self._models[model.name] is not model:
-            raise ValueError(f"a model named {model.name!r} is already registered")
-        self._models[model.name] = model
-        return model
-
-    def unregister(self, name: str) -> None:
-        self._models.pop(name, None)
-
-    def __getitem__(self, name: str) -> Model:
-        return self._models[name]
-
-    def __iter__(self):
-        return iter(self._models)
-
-    def __len__(self) -> int:
-        return len(self._models)
