@@ -4,11 +4,19 @@
 Protocol: :mod:`bearing_mbs.core.force_element`. A worked example of adding a kind: ``docs/guide-add-a-force-element.md``.
 """
 
-from bearing_mbs.elements.assembly import PackedScene, pack_scene, scene_counts, scene_forces, scene_forces_twin
+from bearing_mbs.elements.assembly import (
+    PackedScene,
+    element_forces,
+    element_forces_twin,
+    pack_scene,
+    scene_counts,
+    scene_forces,
+    scene_forces_twin,
+)
 from bearing_mbs.elements.drags import Drag
 from bearing_mbs.elements.loads import Load
 from bearing_mbs.elements.registry import FORCE_ELEMENTS
 from bearing_mbs.elements.servos import VelocityServo
 
-__all__ = ["FORCE_ELEMENTS", "Drag", "Load", "PackedScene", "VelocityServo", "pack_scene", "scene_counts",
-           "scene_forces", "scene_forces_twin"]
+__all__ = ["FORCE_ELEMENTS", "Drag", "Load", "PackedScene", "VelocityServo", "element_forces", "element_forces_twin",
+           "pack_scene", "scene_counts", "scene_forces", "scene_forces_twin"]

@@ -129,23 +129,36 @@ def _add_nothing(elements, t, q, v, latched, forces, pair_out, power, complete):
 
 
 @numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
-def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
-    """Generalized forces [N, N, N m per body] of all force elements, written into ``forces``.
+def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
+    """Generalized forces [N, N, N m per body] of the packed kinds ``elements`` (:attr:`PackedScene.elements`),
+    written into ``forces``.
 
     ``pair_out`` (pairs × :data:`~bearing_mbs.contact.kernel.PAIR_OUTPUTS`) receives each pair's outputs.
     Returns (supplied, dissipated) power [W]. ``complete=False`` (inside integration stages) lets kinds skip
-    outputs no force needs.
+    outputs no force needs. Called from Python (Exudyn's force user function), it takes the kinds alone: numba
+    unboxes every array of its arguments on each call, and these are the ones the forces need.
     """
     forces[:] = 0.0
     power = np.zeros(2)
-    add_built_in_forces(packed.elements, t, q, v, latched, forces, pair_out, power, complete)
-    add_element_forces(packed.elements[BUILT_IN_COUNT:], t, q, v, latched, forces, pair_out, power, complete)
+    add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, complete)
+    add_element_forces(elements[BUILT_IN_COUNT:], t, q, v, latched, forces, pair_out, power, complete)
+    return power[0], power[1]
+
+
+@numba.njit(cache=True, inline="always")
+def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
+    """:func:`element_forces` of a packed scene."""
+    return element_forces(packed.elements, t, q, v, latched, forces, pair_out, complete)
+
+
+def element_forces_twin(elements, t, q, v, latched, forces, pair_out, complete=True):
+    """Same contract as :func:`element_forces`, with every kind's numpy twin (always complete)."""
+    forces[:] = 0.0
+    power = np.zeros(2)
+    add_element_forces(elements, t, q, v, latched, forces, pair_out, power, True)
     return power[0], power[1]
 
 
 def scene_forces_twin(packed, t, q, v, latched, forces, pair_out, complete=True):
     """Same contract as :func:`scene_forces`, with every kind's numpy twin (always complete)."""
-    forces[:] = 0.0
-    power = np.zeros(2)
-    add_element_forces(packed.elements, t, q, v, latched, forces, pair_out, power, True)
-    return power[0], power[1]
+    return element_forces_twin(packed.elements, t, q, v, latched, forces, pair_out, complete)

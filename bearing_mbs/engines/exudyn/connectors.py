@@ -1,8 +1,8 @@
 """The three ways contact forces reach Exudyn (``[solver.exudyn] connector``).
 
 * ``compiled`` — one ``ObjectGenericODE2`` over all body nodes whose force user function calls the numba
-  kernel (:func:`bearing_mbs.elements.scene_forces`). Measured fastest (docs/engines.md).
-* ``python`` — the same object calling the numpy twin (:func:`bearing_mbs.elements.scene_forces_twin`).
+  kernel (:func:`bearing_mbs.elements.element_forces`). Measured fastest (docs/engines.md).
+* ``python`` — the same object calling the numpy twin (:func:`bearing_mbs.elements.element_forces_twin`).
 * ``native`` — Exudyn's own C++ ``ObjectContactSphereSphere`` per pair, for the normal force only. Its
   Hunt–Crossley model has damping factor 3(1 − e_HC)/2, so ``e_HC = 1 − 2d/3`` reproduces any law of the
   hysteresis family with factor d (for Lankarani–Nikravesh, e_HC = (1 + e²)/2). A circle–line pair becomes
@@ -18,7 +18,7 @@ import numpy as np
 
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.core.scene import GROUND, Scene
-from bearing_mbs.elements import scene_forces, scene_forces_twin
+from bearing_mbs.elements import element_forces, element_forces_twin
 from bearing_mbs.spec.fields import SpecError
 
 LINE_AS_SPHERE_RADIUS = 1e6
@@ -50,8 +50,8 @@ class ForceConnector:
     """A force user function over all body nodes, counting its evaluations."""
 
     def __init__(self, packed, reference: np.ndarray, latched: np.ndarray, compiled: bool):
-        self.packed, self.reference, self.latched = packed, reference, latched
-        self.evaluate = scene_forces if compiled else scene_forces_twin
+        self.elements, self.reference, self.latched = packed.elements, reference, latched
+        self.evaluate = element_forces if compiled else element_forces_twin
         self.evaluations = 0
         self._q = np.empty_like(reference)
         self._forces = np.empty_like(reference)
@@ -60,7 +60,7 @@ class ForceConnector:
     def __call__(self, mbs, t, item_number, q, q_t):
         self.evaluations += 1
         np.add(self.reference, q, out=self._q)  # Exudyn passes displacements from the reference
-        self.evaluate(self.packed, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs, False)
+        self.evaluate(self.elements, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs, False)
         return self._forces
 
 

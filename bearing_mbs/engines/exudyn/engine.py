@@ -29,7 +29,7 @@ from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import DistanceConstraint, Scene
-from bearing_mbs.elements import pack_scene, scene_forces
+from bearing_mbs.elements import element_forces, pack_scene
 from bearing_mbs.engines.diagnosis import diverged_message, output_grid, penetration_message
 from bearing_mbs.engines.exudyn.connectors import (
     ForceConnector,
@@ -237,7 +237,8 @@ class _StepMonitor:
         self._record(0.0, [0.0] * len(scene.constraints))
 
     def _evaluate(self, t, complete=False):
-        return scene_forces(self.packed, t, self.q, self.v, self.latched, self._forces, self._pairs, complete)
+        return element_forces(self.packed.elements, t, self.q, self.v, self.latched, self._forces, self._pairs,
+                              complete)
 
     def _record(self, t, constraint_forces=None):
         self._evaluate(t, complete=True)
