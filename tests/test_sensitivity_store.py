@@ -88,8 +88,9 @@ def test_replacing_an_errored_run_keeps_one_row(tmp_path):
 
 
 def test_one_driver_per_directory(tmp_path):
-    with RunStore(tmp_path), pytest.raises(SpecError, match="another sweep"):
+    with RunStore(tmp_path), pytest.raises(SpecError) as error:
         RunStore(tmp_path)
+    assert error.value.field == "--out" and error.value.value == str(tmp_path)
     RunStore(tmp_path).close()  # the lock goes with its holder
 
 

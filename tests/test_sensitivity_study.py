@@ -108,21 +108,25 @@ def test_bad_input_is_a_spec_error_naming_the_field(tmp_path, method, parameters
     with pytest.raises(SpecError) as caught:
         load_study(write_study(tmp_path, method, parameters))
     assert caught.value.field == field, str(caught.value)
-    assert message in str(caught.value)
+    assert message in caught.value.allowed  # what is allowed, not how it is worded around it
 
 
 def test_seed_and_model_choice_are_checked(tmp_path):
-    with pytest.raises(SpecError, match="needs a seed"):
+    with pytest.raises(SpecError) as error:
         load_study(write_study(tmp_path, 'sampler = "latin"\nsamples = 4', RESTITUTION, study="# no seed"))
+    assert error.value.field == "study.seed" and error.value.value is None
     path = write_study(tmp_path, 'sampler = "latin"\nsamples = 4', RESTITUTION, study='seed = 1\nmodel = "ishigami"')
-    with pytest.raises(SpecError, match="either a base scenario file or a built-in model"):
+    with pytest.raises(SpecError) as error:
         load_study(path)
-    with pytest.raises(SpecError, match="file not found"):
+    assert error.value.field == "study.scenario"
+    with pytest.raises(SpecError) as error:
         load_study(tmp_path / "missing.toml")
+    assert error.value.value == str(tmp_path / "missing.toml")
     bad_base = write_study(tmp_path, 'sampler = "latin"\nsamples = 4', RESTITUTION)
     bad_base.write_text(bad_base.read_text().replace("step=1e-5", "stepp=1e-5"))
-    with pytest.raises(SpecError, match="study.scenario.*stepp"):
+    with pytest.raises(SpecError) as error:
         load_study(bad_base)
+    assert error.value.field == "study.scenario" and "stepp" in error.value.allowed  # names the unknown key
 
 
 def test_grid_runs_every_combination(tmp_path):
@@ -153,8 +157,9 @@ def test_sampled_values_are_validated_before_anything_runs(tmp_path):
     path.write_text(path.read_text().replace('"solver.reference.method=velocity_verlet"',
                                              '"solver.reference.method=central_difference"'))
     study = load_study(path)
-    with pytest.raises(SpecError, match=r"sample \d+ = 'solver.reference.step=.*contact_step"):
+    with pytest.raises(SpecError) as error:
         plan(study, sample(study))
+    assert error.value.field.startswith("sample ") and "solver.reference.step" in str(error.value.value)
 
 
 def test_run_key_is_a_content_hash_of_the_canonical_input():
@@ -171,10 +176,12 @@ def test_python_api_validates_like_the_file():
     study = Study("ishigami", IshigamiModel(), [Parameter(f"x{i}", bounds) for i in (1, 2, 3)], ("y",),
                   Method("sobol", samples=8), seed=1)
     assert sample(study).shape == (8 * 5, 3)
-    with pytest.raises(SpecError, match="x4.*unknown key"):
+    with pytest.raises(SpecError) as error:
         Study("ishigami", IshigamiModel(), [Parameter("x4", bounds)], ("y",), Method("sobol", samples=8), seed=1)
-    with pytest.raises(SpecError, match="low < high"):
+    assert error.value.field == "parameters.0.name" and error.value.value == "x4"
+    with pytest.raises(SpecError) as error:
         Parameter("x1", (1.0, -1.0))
+    assert error.value.field == "bounds" and list(error.value.value) == [1.0, -1.0]
 
 
 def test_ishigami_analytic_indices_match_the_literature():
