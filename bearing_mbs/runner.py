@@ -13,8 +13,7 @@ from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import scene_counts
 from bearing_mbs.engines import simulate
-from bearing_mbs.io.json import json_safe as _json_safe
-from bearing_mbs.io.json import write_json
+from bearing_mbs.io.json import json_safe, write_json
 from bearing_mbs.models import MODELS, build_scene
 from bearing_mbs.numerics.advisor import step_warning
 from bearing_mbs.spec import Spec, to_mapping
@@ -79,7 +78,7 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")
     summary.update(MODELS[spec.scenario.model].metrics(spec, scene, result))
-    return {key: _json_safe(value) for key, value in summary.items()}
+    return {key: json_safe(value) for key, value in summary.items()}
 
 
 def write_outputs(spec: Spec, scene: Scene, result: Result, directory: str | Path, figures: bool = True) -> dict:

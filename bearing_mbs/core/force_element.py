@@ -64,12 +64,6 @@ class ForceElement:
     add_forces_twin: Callable
     potential_energy: Callable = no_potential_energy
 
-    def bodies(self, item) -> tuple[int, ...]:
-        """Body indices an item refers to (−1 is the ground)."""
-        if hasattr(item, "body"):
-            return (item.body,)
-        return (item.body_a, item.body_b)
-
 
 class ForceElementRegistry(Registry[ForceElement]):
     """Force-element kinds in evaluation order, by name. :meth:`register` adds a kind from outside the package;

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from bearing_mbs.contact import twin
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.contact.state import penetration_bounds
 from bearing_mbs.core.failures import Failure
-from bearing_mbs.elements import pack_scene, scene_forces
+from bearing_mbs.elements import contact_pairs, pack_scene, scene_forces
 
 COORDINATE_NAMES = ("x", "y", "theta")
 
@@ -66,15 +67,10 @@ def diverged_message(scene, solver, t, coordinate, q, v, latched, step, blown_up
 def penetration_message(scene, solver, t, k, q, v, step) -> str:
     """Pair k penetrated beyond its guard: its depth [m], the guard [m], and a fix."""
     pair = scene.pairs[k]
-    depth = -_gap_of(scene, k, q, v)
-    bound = penetration_bounds(pack_scene(scene).pairs, solver.penetration_limit)[k]
+    pairs = contact_pairs.pack(scene.pairs)
+    depth = -float(twin.pair_geometry(pairs, q, v)[0][k])
+    bound = penetration_bounds(pairs, solver.penetration_limit)[k]
     return (f"t = {t:.6g} s: pair {pair.name!r} penetrates {depth:.3g} m, beyond the guard of {bound:.3g} m "
             f"(penetration_limit = {solver.penetration_limit:g} of the radius). Likely fix: reduce the step "
             f"(now {step:g} s) so the contact is resolved, or raise the stiffness (K = {pair.law.stiffness:.3g}).")
 
-
-def _gap_of(scene, k, q, v):
-    """The gap [m] of pair k at (q, v)."""
-    from bearing_mbs.contact import twin
-
-    return float(twin.pair_geometry(pack_scene(scene).pairs, q, v)[0][k])

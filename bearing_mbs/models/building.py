@@ -7,7 +7,7 @@ import numpy as np
 from bearing_mbs.contact import twin
 from bearing_mbs.contact.normal import DAMPING_FACTOR
 from bearing_mbs.core.scene import PairLaw, Scene
-from bearing_mbs.elements import pack_scene
+from bearing_mbs.elements import contact_pairs
 from bearing_mbs.spec import ContactSpec, SpecError
 
 
@@ -31,7 +31,7 @@ def pair_law(contact: ContactSpec, stiffness: float | None = None, exponent: flo
 def initial_gaps(scene: Scene) -> np.ndarray:
     """Gap [m] of every pair at t = 0."""
     q, v = scene.initial_state()
-    return twin.pair_geometry(pack_scene(scene).pairs, q, v)[0]
+    return twin.pair_geometry(contact_pairs.pack(scene.pairs), q, v)[0]
 
 
 def reject_initial_overlap(scene: Scene, field_of_pair) -> None:
