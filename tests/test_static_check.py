@@ -165,25 +165,28 @@ def test_stiffness_command_writes_the_quasi_static_summary_and_figure(tmp_path):
     * the rollers' centrifugal force m_r (D_pw/2) ω_c² with the epicyclic cage speed
       ω_c = ω_i (1 − D_w/D_pw)/2 (Harris & Kotzalas 2006, ch. 8), 1e-12;
     * equilibrium of the inner ring: the inner-raceway roller loads, summed as vectors along the rollers'
-      directions, carry the applied load plus the ring's weight, to 1e-9 of it;
+      directions, carry the applied load plus the ring's weight, to 1e-7 of it;
     * the stiffness matrix is symmetric (a potential's Hessian) and positive definite.
+
+    summary.json writes 8 significant digits (``bearing_mbs.io.json.DIGITS``), so the 1e-12 and 1e-9 references
+    are compared to 1e-7 here; angles are in [0°, 360°) from +x.
     """
     assert main(["stiffness", str(STEADY), "--out", str(tmp_path)]) == 0
     summary = json.loads((tmp_path / "summary.json").read_text())
     ring_mass = DENSITY * math.pi * (0.210**2 - 0.160**2) / 4 * ROLLER_LENGTH + 40.0
-    assert summary["ring_weight"] == pytest.approx(9.81 * ring_mass, rel=1e-12)
+    assert summary["ring_weight"] == pytest.approx(9.81 * ring_mass, rel=1e-7)
     roller_mass = DENSITY * math.pi * ROLLER_DIAMETER**2 / 4 * ROLLER_LENGTH
     cage_speed = 1500 * RPM * (1 - ROLLER_DIAMETER / PITCH_DIAMETER) / 2
-    assert summary["centrifugal_force"] == pytest.approx(roller_mass * PITCH_DIAMETER / 2 * cage_speed**2, rel=1e-12)
+    assert summary["centrifugal_force"] == pytest.approx(roller_mass * PITCH_DIAMETER / 2 * cage_speed**2, rel=1e-7)
     assert summary["raceway_law"] == "palmgren"
     loads = summary["roller_loads"]
-    assert len(loads) == ROLLERS and loads[0]["angle_deg"] == pytest.approx(-90.0)
+    assert len(loads) == ROLLERS and loads[0]["angle_deg"] == pytest.approx(270.0)
     angle = np.radians([entry["angle_deg"] for entry in loads])
     carried = np.array([entry["load_N"] for entry in loads]) @ np.column_stack([np.cos(angle), np.sin(angle)])
     applied = np.array([0.0, -68e3 - 9.81 * ring_mass])
-    np.testing.assert_allclose(carried, applied, rtol=0, atol=1e-9 * np.hypot(*applied))
+    np.testing.assert_allclose(carried, applied, rtol=0, atol=1e-7 * np.hypot(*applied))
     stiffness = np.array(summary["stiffness_matrix"])
-    np.testing.assert_allclose(stiffness, stiffness.T, rtol=1e-9, atol=1e-9 * np.abs(stiffness).max())
+    np.testing.assert_allclose(stiffness, stiffness.T, rtol=1e-7, atol=1e-7 * np.abs(stiffness).max())
     assert np.all(np.linalg.eigvalsh(0.5 * (stiffness + stiffness.T)) > 0)
     assert max(entry["load_N"] for entry in loads) == pytest.approx(summary["max_roller_load"])
     assert (tmp_path / "load_distribution.png").stat().st_size > 10_000

@@ -11,8 +11,9 @@
 ``bearing-mbs skidding SCENARIO.toml --out DIR [--loads ...] [--cages ...]`` (docs/skidding.md)
 ``bearing-mbs cage-models SCENARIO.toml --out DIR [--no-roller-guided]`` (docs/cage-models.md)
 
-Exit status: 0 when the run succeeded, 1 when it stopped early (its summary and result are still
-written), 2 for bad input (nothing runs).
+Exit status (docs/status.md): 0 success; 3 suspect (a run reached its end but failed a check); 1 failed (a run
+stopped early; its summary and result are still written); 2 bad input (nothing runs); 130 or 143 interrupted by
+SIGINT or SIGTERM (what was computed is written).
 """
 
 from __future__ import annotations
@@ -23,6 +24,9 @@ import sys
 
 from bearing_mbs._numba_cache import invalidate_if_stale
 from bearing_mbs.cli import runs, studies
+from bearing_mbs.cli.options import BAD_INPUT, exit_code, remove_created_output
+from bearing_mbs.core.interrupt import StopRequest, stop_on_signals
+from bearing_mbs.core.result import INTERRUPTED
 from bearing_mbs.spec import SpecError
 
 
@@ -34,7 +38,10 @@ def main(argv: list[str] | None = None) -> int:
     invalidate_if_stale()  # once per process, before anything compiles (never at import)
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
     try:
-        return handlers[args.command](args)
+        with stop_on_signals(StopRequest()) as request:  # a run stops, keeps its output, and so do later ones
+            code = handlers[args.command](args)
     except SpecError as error:
+        remove_created_output(args)  # bad input found after the output directory was made leaves nothing
         print(f"error: {error}", file=sys.stderr)
-        return 2
+        return BAD_INPUT
+    return exit_code(INTERRUPTED, request.signal_number) if request.is_set() else code

@@ -6,7 +6,8 @@ from __future__ import annotations
 import logging
 import sys
 
-from bearing_mbs.cli.options import add_overrides, load_with_engine
+from bearing_mbs.cli.options import add_output, add_overrides, exit_code, load_with_engine, output_directory
+from bearing_mbs.core.result import FAILED
 from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
@@ -23,41 +24,55 @@ def register(commands) -> dict:
 def _add_run(commands) -> None:
     run = commands.add_parser("run", help="run one scenario and write summary.json, result.npz and figures")
     run.add_argument("scenario", help="scenario TOML file (see docs/scenario-format.md)")
-    run.add_argument("--out", required=True, help="output directory")
+    add_output(run, "output directory (new or empty, or give --overwrite)")
     run.add_argument("--engine", choices=("exudyn", "reference"), help="override [solver] engine")
     add_overrides(run)
+    run.add_argument("--check-slip", action="store_true",
+                     help="also run at half the step and add the spurious-slip check (twice the cost)")
     run.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     run.add_argument("--animate", action="store_true", help="also write DIR/animation.gif (bearing model)")
     run.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
 def _run(args) -> int:
+    """Exit 0: success; 3: suspect (a check failed); 1: failed (stopped early); 130/143: interrupted by SIGINT/
+    SIGTERM (set by :func:`bearing_mbs.cli.main`); 2: bad input, nothing ran. Whatever was computed is written in
+    every case but bad input."""
+    from bearing_mbs.core.interrupt import stop_requested
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.runner import run_spec, write_outputs
 
     spec = load_with_engine(args)
     if args.animate and spec.scenario.model != "bearing":
-        raise SpecError("scenario.model", spec.scenario.model, "--animate draws the bearing model only")
+        raise SpecError("--animate", spec.scenario.model, "the bearing model only")
+    directory = output_directory(args)
     scene, result = run_spec(spec, ProgressMeter() if args.quiet else TqdmProgress())
-    summary = write_outputs(spec, scene, result, args.out, figures=not args.no_figures)
-    if args.animate:
-        from pathlib import Path
+    if args.check_slip and result.completed and not stop_requested():
+        from bearing_mbs.studies.spurious_slip import check_spurious_slip
 
+        slip = check_spurious_slip(scene, spec.solver, spec.scenario.end_time, result)
+        result.checks = (*result.checks, slip.to_check())
+    summary = write_outputs(spec, scene, result, directory, figures=not args.no_figures)
+    if args.animate and result.completed:
         from bearing_mbs.models.cylindrical_roller.figures import animate
 
-        animate(spec, scene, result, Path(args.out) / "animation.gif")
+        animate(spec, scene, result, directory / "animation.gif")
     print(f"{summary['scenario']}: {summary['status']} ({summary['engine']} {summary['solver']}, "
-          f"{summary['steps']} steps, {summary['wall_time_s']:.3g} s) -> {args.out}")
-    if not result.success:
+          f"{summary['steps']} steps, {summary['wall_time_s']:.3g} s) -> {summary['written_to']}")
+    if result.message:
         print(f"stopped: {result.message}", file=sys.stderr)
-        return 1
-    return 0
+    for check in result.failed_checks:
+        print(f"check {check.line()}", file=sys.stderr)
+    passed = sum(check.passed for check in result.checks)
+    if result.checks:
+        print(f"checks: {passed} of {len(result.checks)} passed")
+    return exit_code(result.status)
 
 
 def _add_sweep(commands) -> None:
     sweep = commands.add_parser("sweep", help="run a sensitivity study (grid, Latin hypercube, Morris, Sobol) on Dask")
     sweep.add_argument("study", help="study TOML file (see docs/sensitivity.md)")
-    sweep.add_argument("--out", required=True, help="output directory: run store and report; re-running resumes")
+    add_output(sweep, "output directory: run store and report; re-running resumes", resumes=True)
     sweep.add_argument("--scheduler", metavar="ADDRESS", help="Dask scheduler address (default: a local cluster)")
     sweep.add_argument("--workers", type=int, metavar="N",
                        help="local cluster size (default: one per CPU), or workers to wait for on --scheduler")
@@ -68,15 +83,16 @@ def _add_sweep(commands) -> None:
 
 
 def _sweep(args) -> int:
-    """Exit 0: every run succeeded; 1: some runs errored or stopped early (all are recorded, the report is
-    written); 2: bad input, nothing ran."""
+    """Exit 0: every run succeeded; 3: some are suspect; 1: some errored or stopped early (all are recorded,
+    the report is written); 2: bad input, nothing ran."""
     import distributed  # noqa: F401  (configures its loggers on import; quieten them after)
 
-    from bearing_mbs.core.progress import ProgressMeter
-    from bearing_mbs.studies.sensitivity import TqdmRunProgress, load_study, run_study
+    from bearing_mbs.core.progress import ProgressMeter, TqdmRunProgress
+    from bearing_mbs.studies.sensitivity import load_study, run_study
 
     logging.getLogger("distributed").setLevel(logging.WARNING)
     study = load_study(args.study, args.set)
+    output_directory(args)
     result = run_study(study, args.out, scheduler=args.scheduler, workers=args.workers,
                        progress=ProgressMeter() if args.quiet else TqdmRunProgress(),
                        retry_errors=args.retry_errors, figures=not args.no_figures)
@@ -84,14 +100,16 @@ def _sweep(args) -> int:
     print(f"{study.name}: {len(result.table)} samples, {result.stats.evaluated} runs evaluated now, "
           f"{result.stats.skipped} already stored; {', '.join(f'{n} {s}' for s, n in counts.items())} "
           f"-> {result.report}")
-    return 0 if result.complete else 1
+    runs = result.table.drop_duplicates("key")["status"]
+    return exit_code([FAILED if status in ("error", "missing") else status for status in runs])
 
 
 def _add_stiffness(commands) -> None:
     stiffness = commands.add_parser(
         "stiffness", help="quasi-static load distribution and 2x2 stiffness of a bearing scenario (no simulation)")
     stiffness.add_argument("scenario", help="bearing scenario TOML file (model = 'bearing')")
-    stiffness.add_argument("--out", required=True, help="output directory: summary.json and load_distribution.png")
+    add_output(stiffness, "output directory (new or empty, or give --overwrite): summary.json and "
+                          "load_distribution.png")
     add_overrides(stiffness)
     stiffness.add_argument("--no-figures", action="store_true", help="skip the PNG figure")
 
@@ -102,7 +120,7 @@ def _stiffness(args) -> int:
 
     spec = load_spec(args.scenario, args.set)
     require_bearing(spec)
-    summary = write_stiffness(spec, args.out, figures=not args.no_figures)
+    summary = write_stiffness(spec, output_directory(args), figures=not args.no_figures)
     print(f"{summary['scenario']}: displacement {summary['radial_displacement']:.4g} m, max roller load "
           f"{summary['max_roller_load']:.4g} N, K_xx {summary['stiffness_matrix'][0][0]:.4g} N/m, "
           f"K_yy {summary['stiffness_matrix'][1][1]:.4g} N/m -> {args.out}")
@@ -143,5 +161,5 @@ def _advise(args) -> int:
     from bearing_mbs.studies.spurious_slip import check_spurious_slip
 
     check = check_spurious_slip(scene, spec.solver, spec.scenario.end_time)
-    print(("spurious slip: " if check.spurious else "") + check.message)
+    print(f"check {check.to_check().line()}" + ("" if check.spurious else f": {check.message}"))
     return 1 if check.spurious else 0

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from bearing_mbs.cli.options import add_overrides, names, numbers
+from bearing_mbs.cli.options import add_output, add_overrides, exit_code, names, numbers, output_directory
 from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
@@ -24,7 +24,7 @@ def _add_convergence(commands) -> None:
     convergence = commands.add_parser(
         "convergence", help="work-precision study: error against run time for the settings in [convergence]")
     convergence.add_argument("scenario", help="scenario TOML file with a [convergence] section")
-    convergence.add_argument("--out", required=True, help="output directory; re-running skips finished runs")
+    add_output(convergence, "output directory; re-running skips finished runs", resumes=True)
     add_overrides(convergence, "override any spec field (repeatable)")
     convergence.add_argument("--quiet", action="store_true", help="no progress bar")
 
@@ -33,7 +33,8 @@ def _convergence(args) -> int:
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies.convergence import study
 
-    summary = study(load_spec(args.scenario, args.set), args.out, ProgressMeter() if args.quiet else TqdmProgress())
+    spec = load_spec(args.scenario, args.set)
+    summary = study(spec, output_directory(args), ProgressMeter() if args.quiet else TqdmProgress())
     for target, best in summary["cheapest"].items():
         setting = "not reached" if best is None else (
             f"{best['engine']} {best['solver']} step={best['step'] or '-'} tolerance={best['tolerance'] or '-'} "
@@ -46,7 +47,7 @@ def _add_stability(commands) -> None:
     stability = commands.add_parser(
         "stability", help="stability suite: which solver survives stiff and extreme variations, up to which step")
     stability.add_argument("scenario", help="bearing scenario TOML file, the base of the variations")
-    stability.add_argument("--out", required=True, help="output directory; re-running skips finished cells")
+    add_output(stability, "output directory; re-running skips finished cells", resumes=True)
     stability.add_argument("--reduced", action="store_true", help="the reduced suite of the default tests")
     stability.add_argument("--cases", help="comma-separated case names (default: all; see docs/numerics.md)")
     stability.add_argument("--solvers", help="comma-separated engine/method pairs, e.g. reference/rk4,exudyn/rk44")
@@ -61,13 +62,14 @@ def _stability(args) -> int:
     cases = stability.REDUCED_CASES if args.reduced else stability.CASE_NAMES
     solvers = stability.REDUCED_SOLVERS if args.reduced else stability.SOLVERS
     if args.cases:
-        cases = tuple(name.strip() for name in args.cases.split(","))
+        cases = names(args.cases)
+        for name in cases:
+            if name not in stability.CASE_NAMES:
+                raise SpecError("--cases", name, f"case names among {', '.join(stability.CASE_NAMES)}")
     if args.solvers:
-        solvers = tuple(tuple(item.strip().split("/", 1)) for item in args.solvers.split(","))
-        for item in solvers:
-            if len(item) != 2:
-                raise SpecError("--solvers", "/".join(item), "must be engine/method pairs")
-    summary = stability.study(load_spec(args.scenario, args.set), args.out, cases=cases, solvers=solvers,
+        solvers = _solver_pairs(args.solvers)
+    spec = load_spec(args.scenario, args.set)
+    summary = stability.study(spec, output_directory(args), cases=cases, solvers=solvers,
                               figures=not args.no_figures)
     fraction = summary["fraction_within_factor_2"]
     print(f"{summary['scenario']}: {summary['cells']} cells; advisor within a factor of 2 of the measured limit in "
@@ -76,12 +78,27 @@ def _stability(args) -> int:
     return 0
 
 
+def _solver_pairs(text: str) -> tuple[tuple[str, str], ...]:
+    """``--solvers`` as (engine, method) pairs, each an engine and one of its methods."""
+    from bearing_mbs.spec.solver import EXUDYN_METHODS, REFERENCE_METHODS
+
+    known = {"reference": tuple(REFERENCE_METHODS), "exudyn": tuple(EXUDYN_METHODS)}
+    pairs = []
+    for item in names(text):
+        engine, _, method = item.partition("/")
+        if method not in known.get(engine, ()):
+            raise SpecError("--solvers", item, "engine/method pairs among "
+                            + ", ".join(f"{e}/{m}" for e, methods in known.items() for m in methods))
+        pairs.append((engine, method))
+    return tuple(pairs)
+
+
 def _add_numerics_report(commands) -> None:
     report = commands.add_parser(
         "numerics-report", help="figure and tables of cheapest sound settings from a convergence study's results")
     report.add_argument("study", help="output directory of a bearing-mbs convergence study (with convergence.csv)")
     report.add_argument("--name", required=True, help="scenario name for titles and file names")
-    report.add_argument("--out", required=True, help="directory for work_precision_NAME.png and .md")
+    add_output(report, "directory for work_precision_NAME.png and .md (new or empty, or give --overwrite)")
     report.add_argument("--norms", default="cage_speed,slips", help="comma-separated norms to plot and tabulate")
     report.add_argument("--document-step", type=float, default=1 / 1.8e6, metavar="H",
                         help="the document's step for its scheme [s], starred (default 1/1.8e6 s)")
@@ -92,7 +109,7 @@ def _numerics_report(args) -> int:
     from bearing_mbs.studies.numerics_report import run
 
     norms = names(args.norms)
-    print(run(args.study, args.name, args.out, norms, args.document_step))
+    print(run(args.study, args.name, output_directory(args), norms, args.document_step))
     return 0
 
 
@@ -100,7 +117,7 @@ def _add_static_check(commands) -> None:
     check = commands.add_parser(
         "static-check", help="settled dynamic equilibria and stiffness against the quasi-static solution")
     check.add_argument("scenario", help="bearing scenario TOML file (the repository's: scenarios/static_check.toml)")
-    check.add_argument("--out", required=True, help="output directory: static_check.json")
+    add_output(check, "output directory: static_check.json (new or empty, or give --overwrite)")
     check.add_argument("--engines", default="exudyn,reference", help="comma-separated engines to check")
     check.add_argument("--loads", default="5e3,20e3,68e3",
                        help="comma-separated external loads [N] along the scenario's [load] angle")
@@ -116,9 +133,10 @@ def _static_check(args) -> int:
     from bearing_mbs.studies import static_check
 
     engines = names(args.engines)
+    directory = output_directory(args)
     check = static_check.run(args.scenario, numbers("--loads", args.loads), engines, overrides=args.set,
                              stiffness_load=None if args.no_stiffness else args.stiffness_load)
-    path = static_check.write(check, args.out)
+    path = static_check.write(check, directory)
     print(static_check.report(check))
     print(f"-> {path}")
     settled = all(c.equilibrium.settled for c in check.comparisons) and all(s.settled for s in check.stiffness)
@@ -128,7 +146,7 @@ def _static_check(args) -> int:
 def _add_skidding(commands) -> None:
     skidding = commands.add_parser("skidding", help="cage slip against radial load, per cage model")
     skidding.add_argument("scenario", help="bearing scenario TOML file at constant speed, the base of the sweep")
-    skidding.add_argument("--out", required=True, help="output directory: skidding_vs_load.{csv,md,png}")
+    add_output(skidding, "output directory: skidding_vs_load.{csv,md,png} (new or empty, or give --overwrite)")
     skidding.add_argument("--loads", default="68000,6800,2000,680,200", help="comma-separated radial loads [N]")
     skidding.add_argument("--cages", default="penalty,constraint", help="comma-separated cage models")
     add_overrides(skidding, "override any spec field of the base scenario, e.g. scenario.end_time=0.3 (repeatable)")
@@ -137,7 +155,8 @@ def _add_skidding(commands) -> None:
 
 
 def _skidding(args) -> int:
-    """Exit 0: every run succeeded; 1: some stopped early (all are written); 2: bad input, nothing ran."""
+    """Exit 0: every run succeeded; 3: some are suspect; 1: some stopped early (all are written); 2: bad input,
+    nothing ran."""
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies import skidding
 
@@ -145,18 +164,19 @@ def _skidding(args) -> int:
     for name in cages:
         if name not in skidding.CAGES:
             raise SpecError("--cages", name, f"must be among {', '.join(skidding.CAGES)}")
-    sweeps = skidding.run(load_spec(args.scenario, args.set), args.out, numbers("--loads", args.loads),
+    spec, loads = load_spec(args.scenario, args.set), numbers("--loads", args.loads)
+    sweeps = skidding.run(spec, output_directory(args), loads,
                           {name: skidding.CAGES[name] for name in cages}, figures=not args.no_figures,
                           progress=ProgressMeter() if args.quiet else TqdmProgress())
     print(skidding.markdown_table(sweeps))
     print(skidding.trend_text(sweeps) + f"-> {args.out}")
-    return 0 if all(row["status"] == "success" for rows in sweeps.values() for row in rows) else 1
+    return exit_code([row["status"] for rows in sweeps.values() for row in rows])
 
 
 def _add_cage_models(commands) -> None:
     cages = commands.add_parser("cage-models", help="compare the penalty, constraint and no-cage models")
     cages.add_argument("scenario", help="bearing scenario TOML file, the base of the comparison")
-    cages.add_argument("--out", required=True, help="output directory: cage_models.{md,csv} and two figures")
+    add_output(cages, "output directory: cage_models.{md,csv} and two figures (new or empty, or give --overwrite)")
     cages.add_argument("--no-roller-guided", action="store_true",
                        help="only the three cage models, without the two roller-guided runs")
     add_overrides(cages, "override any spec field of the base scenario (repeatable)")
@@ -165,11 +185,13 @@ def _add_cage_models(commands) -> None:
 
 
 def _cage_models(args) -> int:
-    """Exit 0: every run succeeded; 1: some stopped early (all are written); 2: bad input, nothing ran."""
+    """Exit 0: every run succeeded; 3: some are suspect; 1: some stopped early (all are written); 2: bad input,
+    nothing ran."""
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies import cage_models
 
-    rows = cage_models.run(load_spec(args.scenario, args.set), args.out, roller_guided=not args.no_roller_guided,
+    spec = load_spec(args.scenario, args.set)
+    rows = cage_models.run(spec, output_directory(args), roller_guided=not args.no_roller_guided,
                            figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
     print(cage_models.markdown_table(rows) + f"-> {args.out}")
-    return 0 if all(row["status"] == "success" for row in rows) else 1
+    return exit_code([row["status"] for row in rows])

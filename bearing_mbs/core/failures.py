@@ -26,6 +26,8 @@ class Failure(enum.IntEnum):
     BLOWUP = 5
     #: the engine's own solver gave up (Exudyn: Newton's method did not converge, or the solver stopped)
     SOLVER_FAILED = 6
+    #: the user stopped the run (SIGINT or SIGTERM); what was computed is kept
+    INTERRUPTED = 7
 
     @property
     def diverged(self) -> bool:

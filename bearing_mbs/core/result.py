@@ -14,10 +14,15 @@ import numpy as np
 
 from bearing_mbs.contact.kernel import PAIR_OUTPUTS
 from bearing_mbs.contact.state import EVENT_COLUMNS
+from bearing_mbs.core.checks import Check
 from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.topology import Topology
 
-SUCCESS, FAILED = "success", "failed"
+#: The status values (docs/status.md): ``success`` only when the run reached its end and every check passed;
+#: ``suspect`` when it reached its end but a check failed; ``failed`` when it stopped early; ``interrupted``
+#: when the user stopped it.
+SUCCESS, SUSPECT, FAILED, INTERRUPTED = "success", "suspect", "failed", "interrupted"
+STATUSES = (SUCCESS, SUSPECT, FAILED, INTERRUPTED)
 
 
 @dataclass
@@ -44,8 +49,10 @@ class Result:
     dissipated by the contacts [J], integrated by the engine step by step; events (P, 4): first impact and
     separation of each pair. Sensors a scene does not list (:attr:`bearing_mbs.core.scene.Scene.sensors`) are left
     empty. ``failure`` is the kind of an early stop (:class:`~bearing_mbs.core.failures.Failure`, ``NONE`` when the
-    run reached its end); ``status`` (``success`` or ``failed``) follows from it; ``message`` says why, in words made
-    from the kind and the state where the run stopped. ``topology`` is the scene's: which body and pair is which.
+    run reached its end); ``message`` says why, in words made from the kind and the state where the run stopped.
+    ``checks`` are the checks the finished run was held to (:mod:`bearing_mbs.core.checks`; the runner adds them).
+    ``status`` follows from the failure and the checks (:data:`STATUSES`). ``topology`` is the scene's: which body
+    and pair is which.
     """
 
     engine: str
@@ -66,17 +73,33 @@ class Result:
     topology: Topology = field(default_factory=Topology)
     spec: dict | None = None
     metadata: dict = field(default_factory=dict)
+    checks: tuple[Check, ...] = ()
 
     def __post_init__(self):
         self.failure = Failure(self.failure)
+        self.checks = tuple(c if isinstance(c, Check) else Check.from_dict(c) for c in self.checks)
 
     @property
     def status(self) -> str:
-        return SUCCESS if self.failure == Failure.NONE else FAILED
+        if self.failure == Failure.INTERRUPTED:
+            return INTERRUPTED
+        if self.failure != Failure.NONE:
+            return FAILED
+        return SUCCESS if all(check.passed for check in self.checks) else SUSPECT
+
+    @property
+    def completed(self) -> bool:
+        """The engine reached the end time (whatever the checks say)."""
+        return self.failure == Failure.NONE
 
     @property
     def success(self) -> bool:
-        return self.failure == Failure.NONE
+        """Reached the end and passed every check."""
+        return self.status == SUCCESS
+
+    @property
+    def failed_checks(self) -> tuple[Check, ...]:
+        return tuple(check for check in self.checks if not check.passed)
 
     def body(self, name: str) -> int:
         return self.body_names.index(name)
@@ -100,6 +123,7 @@ class Result:
         header["stats"] = asdict(self.stats)
         header["failure"] = int(self.failure)
         header["topology"] = self.topology.to_dict()
+        header["checks"] = [check.to_dict() for check in self.checks]
         temporary = path.with_name(path.name + ".part")
         with temporary.open("wb") as handle:
             np.savez_compressed(

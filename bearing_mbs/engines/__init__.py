@@ -4,10 +4,14 @@
 * ``exudyn`` — Exudyn rigid bodies with our force elements in one generic ODE2 object (:mod:`.exudyn`).
 
 Engines know scenes, force elements and solvers, and nothing of any model.
+
+Both stop within about a second of a SIGINT or SIGTERM (:mod:`bearing_mbs.core.interrupt`) with the failure kind
+``INTERRUPTED`` and every output instant computed so far.
 """
 
 from __future__ import annotations
 
+from bearing_mbs.core.interrupt import StopRequest, active_request, stop_on_signals
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
@@ -16,14 +20,24 @@ from bearing_mbs.spec.solver import SolverSpec
 
 def simulate(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
              spec: dict | None = None) -> Result:
-    """Run ``scene`` from 0 to ``end_time`` [s] with the engine and settings of ``solver``."""
+    """Run ``scene`` from 0 to ``end_time`` [s] with the engine and settings of ``solver``; SIGINT and SIGTERM
+    stop it with what it computed (inside a caller's :func:`~bearing_mbs.core.interrupt.stop_on_signals` block,
+    that block's request)."""
+    request = active_request()
+    if request is None:
+        with stop_on_signals(StopRequest()) as request:
+            return _simulate(scene, solver, end_time, progress, spec, request)
+    return _simulate(scene, solver, end_time, progress, spec, request)
+
+
+def _simulate(scene, solver, end_time, progress, spec, stop) -> Result:
     if solver.engine == "reference":
         from bearing_mbs.engines.reference.engine import simulate_reference
 
-        return simulate_reference(scene, solver, end_time, progress, spec)
+        return simulate_reference(scene, solver, end_time, progress, spec, stop)
     from bearing_mbs.engines.exudyn.engine import simulate_exudyn
 
-    return simulate_exudyn(scene, solver, end_time, progress, spec)
+    return simulate_exudyn(scene, solver, end_time, progress, spec, stop)
 
 
 __all__ = ["simulate"]

@@ -1,8 +1,8 @@
 """Engine-neutral diagnosis of runs: the output instants, and a failure's message from its kind
 (:class:`~bearing_mbs.core.failures.Failure`) and the state where the run stopped.
 
-A message names the time, the body or pair at fault, and a likely fix. Each engine passes its own step:
-the step it ran with when the failure is about the step.
+A message names the time, the body or pair at fault, and a likely fix that names a value and fits what the run
+already uses (a quarter of its step; the implicit solver only for a run that is not already implicit).
 """
 
 from __future__ import annotations
@@ -32,23 +32,46 @@ def failure_message(failure: Failure, scene, solver, t: float, culprit: int, q, 
     step when it stopped (the adaptive step on an underflow). The fixes quote the active engine's settings.
     """
     settings = solver.active
-    step = settings.step
     if failure == Failure.NONE:
         return ""
+    if failure == Failure.INTERRUPTED:
+        return interrupted_message(t)
     if failure.diverged:
-        return diverged_message(scene, solver, t, culprit, q, v, latched, step, blown_up=failure == Failure.BLOWUP)
+        return diverged_message(scene, solver, t, culprit, q, v, latched, blown_up=failure == Failure.BLOWUP)
     if failure == Failure.PENETRATION:
-        return penetration_message(scene, solver, t, culprit, q, v, step)
+        return penetration_message(scene, solver, t, culprit, q, v)
     if failure == Failure.STEP_UNDERFLOW:
         return (f"t = {t:.6g} s: the adaptive step fell to {h:.3g} s. Likely fix: loosen the tolerance "
                 f"(now {settings.tolerance:g}) or raise the friction regularisation speed.")
     if failure == Failure.PROJECTION_FAILED:
-        return (f"t = {t:.6g} s: the constraint projection did not converge. Likely fix: reduce the step "
-                f"(now {step:g} s).")
-    return f"t = {t:.6g} s: the solver stopped (step {h:.3g} s). Likely fix: reduce the step (now {step:g} s)."
+        return f"t = {t:.6g} s: the constraint projection did not converge. Likely fix: {smaller_step(solver)}."
+    return f"t = {t:.6g} s: the solver stopped (step {h:.3g} s). Likely fix: {smaller_step(solver)}."
 
 
-def diverged_message(scene, solver, t, coordinate, q, v, latched, step, blown_up) -> str:
+def smaller_step(solver) -> str:
+    """The usual remedy, naming the value: a quarter of the step (or a hundredth of the tolerance) the run used."""
+    settings = solver.active
+    if settings.adaptive:
+        return f"tighten the tolerance from {settings.tolerance:g} to {settings.tolerance / 100:g}"
+    return f"reduce the step from {settings.step:g} s to {settings.step / 4:g} s"
+
+
+def divergence_fix(solver) -> str:
+    """What to change after a divergence, given what the run already uses: an explicit method may switch to the
+    implicit solver; an implicit one that diverges needs a smaller step, or the case is beyond the model."""
+    if getattr(solver.active, "implicit", False):
+        return (f"{smaller_step(solver)}; if it still diverges, the load or speed is beyond what the contacts "
+                f"can carry: check [load] and [drive]")
+    switch = "" if solver.engine == "exudyn" and solver.active.method == "generalized_alpha" else \
+        ", or switch to Exudyn's generalized_alpha (implicit: no stability limit)"
+    return f"{smaller_step(solver)} (`bearing-mbs advise` gives the stability limit){switch}"
+
+
+def interrupted_message(t: float) -> str:
+    return f"t = {t:.6g} s: interrupted on request (SIGINT or SIGTERM); the output up to this instant is kept."
+
+
+def diverged_message(scene, solver, t, coordinate, q, v, latched, blown_up) -> str:
     """A run diverged: name the body, the most engaged pair (smallest gap) in the last good state, a fix."""
     body = scene.bodies[coordinate // 3].name
     what = (f"moves faster than speed_limit = {solver.speed_limit:g} m/s" if blown_up
@@ -60,17 +83,16 @@ def diverged_message(scene, solver, t, coordinate, q, v, latched, step, blown_up
         k = int(np.argmin(pair_out[:, 0]))
         culprit = (f" The most engaged pair in the last good state was {scene.pairs[k].name!r} "
                    f"(gap {pair_out[k, 0]:.3g} m, normal force {pair_out[k, 3]:.3g} N).")
-    return (f"t = {t:.6g} s: body {body!r} {what}; the run diverged.{culprit} Likely fix: reduce the step "
-            f"(now {step:g} s) below the explicit stability limit, or use Exudyn's generalized-alpha solver.")
+    return f"t = {t:.6g} s: body {body!r} {what}; the run diverged.{culprit} Likely fix: {divergence_fix(solver)}."
 
 
-def penetration_message(scene, solver, t, k, q, v, step) -> str:
+def penetration_message(scene, solver, t, k, q, v) -> str:
     """Pair k penetrated beyond its guard: its depth [m], the guard [m], and a fix."""
     pair = scene.pairs[k]
     pairs = contact_pairs.pack(scene.pairs)
     depth = -float(twin.pair_geometry(pairs, q, v)[0][k])
     bound = penetration_bounds(pairs, solver.penetration_limit)[k]
     return (f"t = {t:.6g} s: pair {pair.name!r} penetrates {depth:.3g} m, beyond the guard of {bound:.3g} m "
-            f"(penetration_limit = {solver.penetration_limit:g} of the radius). Likely fix: reduce the step "
-            f"(now {step:g} s) so the contact is resolved, or raise the stiffness (K = {pair.law.stiffness:.3g}).")
+            f"(penetration_limit = {solver.penetration_limit:g} of the radius). Likely fix: {smaller_step(solver)} "
+            f"so the contact is resolved, or raise the stiffness (K = {pair.law.stiffness:.3g}).")
 

@@ -8,6 +8,9 @@ from pathlib import Path
 
 import numpy as np
 
+#: Significant digits a summary writes for a float: beyond them the numbers are round-off or solver noise.
+DIGITS = 8
+
 
 def json_safe(value):
     """``value`` with every non-finite float (NaN, ±inf) replaced by ``None``, recursively through dicts, lists
@@ -22,6 +25,17 @@ def json_safe(value):
         return {key: json_safe(item) for key, item in value.items()}
     if isinstance(value, (list, tuple)):
         return [json_safe(item) for item in value]
+    return value
+
+
+def rounded(value, digits: int = DIGITS):
+    """``value`` with every float rounded to ``digits`` significant digits, through dicts and lists."""
+    if isinstance(value, float) and math.isfinite(value) and value != 0.0:
+        return round(value, digits - 1 - math.floor(math.log10(abs(value))))
+    if isinstance(value, dict):
+        return {key: rounded(item, digits) for key, item in value.items()}
+    if isinstance(value, list):
+        return [rounded(item, digits) for item in value]
     return value
 
 

@@ -31,7 +31,9 @@ class Model:
     * ``prepare(data) -> data`` — fills model-specific defaults into the raw mapping before validation
       (a preset, say); optional;
     * ``linearise(scene)`` — operating point and modes for the step advisor, ``None`` for a scene it does not
-      model; optional.
+      model; optional;
+    * ``units`` — the unit of each entry ``metrics`` returns (``"N"``, ``"m/s"``, ``"-"``, ``"deg"``…), written to
+      summary.json's ``units`` map.
     """
 
     name: str
@@ -41,6 +43,7 @@ class Model:
     figures: Callable[[Any, Scene, Result, Path], list]
     prepare: Callable[[dict], dict] = field(default=lambda data: data)
     linearise: Callable[[Scene], Any] | None = None
+    units: dict = field(default_factory=dict)
 
 
 class ModelRegistry(Registry[Model]):

@@ -127,8 +127,29 @@ def _advise(scene: Scene) -> Advice:
                          f"{', '.join(m.name for m in MODELS.values() if m.linearise is not None) or 'none'})")
 
 
-def step_warning(scene: Scene, solver) -> str | None:
-    """A warning when ``solver``'s fixed explicit step exceeds the advised limit for ``scene``, else None."""
+@dataclass(frozen=True)
+class StepAgainstLimit:
+    """A fixed explicit step [s] (the contact step for central difference) against the advised stability
+    ``limit`` [s] set by ``mode``, with the ``recommended`` step [s] (None without a finite one)."""
+
+    step: float
+    limit: float
+    recommended: float | None
+    mode: str
+
+    @property
+    def exceeded(self) -> bool:
+        return self.step > self.limit
+
+    def fix(self) -> str:
+        """The likely fix, naming the value: the recommended step, or the implicit solver to switch to."""
+        step = f"use a step <= {self.recommended:.2g} s" if self.recommended else "use another solver"
+        return f"{step}, or Exudyn's generalized_alpha (implicit: no such limit)"
+
+
+def step_against_limit(scene: Scene, solver) -> StepAgainstLimit | None:
+    """The run's fixed explicit step against the advised limit, or None where no limit applies (adaptive or
+    implicit methods, Exudyn's native contacts, a scene no model linearises)."""
     settings = solver.active
     if getattr(settings, "adaptive", False) or getattr(settings, "implicit", False):
         return None
@@ -139,10 +160,16 @@ def step_warning(scene: Scene, solver) -> str | None:
         step = settings.contact_step  # the step while contacts are closed, i.e. always in a bearing
     advice = advise(scene)
     limit, mode = advice.limit_and_mode(solver.engine, settings.method)
-    if limit is None or not step > limit:
+    if limit is None:
         return None
-    recommended = advice.recommended(solver.engine, settings.method)
-    fix = f"use a step <= {recommended:.2g} s" if recommended else "use another solver"
-    return (f"{scene.name}: the {solver.engine} {settings.method} step {step:.3g} s exceeds the advised stability "
-            f"limit {limit:.3g} s, set by {mode}: above it a run may stay bounded but slip wrongly (a spurious "
-            f"skidding cycle). Likely fix: {fix}, or generalized-alpha (see `bearing-mbs advise`).")
+    return StepAgainstLimit(step, limit, advice.recommended(solver.engine, settings.method), mode)
+
+
+def step_warning(scene: Scene, solver) -> str | None:
+    """A warning when ``solver``'s fixed explicit step exceeds the advised limit for ``scene``, else None."""
+    check = step_against_limit(scene, solver)
+    if check is None or not check.exceeded:
+        return None
+    return (f"{scene.name}: the {solver.engine} {solver.active.method} step {check.step:.3g} s exceeds the advised "
+            f"stability limit {check.limit:.3g} s, set by {check.mode}: above it a run may stay bounded but slip "
+            f"wrongly (a spurious skidding cycle). Likely fix: {check.fix()} (see `bearing-mbs advise`).")

@@ -26,11 +26,18 @@ import numpy as np
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.contact.state import advance_pair_state, initial_pair_state
 from bearing_mbs.core.failures import Failure
-from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.interrupt import StopRequest
+from bearing_mbs.core.progress import ProgressMeter, notice_if_slow
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import DistanceConstraint, Scene
 from bearing_mbs.elements import element_forces, pack_scene
-from bearing_mbs.engines.diagnosis import diverged_message, output_grid, penetration_message
+from bearing_mbs.engines.diagnosis import (
+    diverged_message,
+    interrupted_message,
+    output_grid,
+    penetration_message,
+    smaller_step,
+)
 from bearing_mbs.engines.exudyn.connectors import (
     ForceConnector,
     add_native_contacts,
@@ -53,7 +60,7 @@ def check_supported(scene: Scene, solver: SolverSpec) -> None:
 
 
 def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
-                    spec: dict | None = None) -> Result:
+                    spec: dict | None = None, stop: StopRequest | None = None) -> Result:
     import exudyn as exu
     from exudyn.itemInterface import (
         LoadMassProportional,
@@ -123,12 +130,14 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     if (scene.pairs and not native) or scene.forces:
         # the other force elements next to native contacts go through the compiled kernel
         connector = ForceConnector(force_scene, reference, latched, compiled=settings.connector != "python")
-        connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
+        with notice_if_slow("compiling the force kernels for Exudyn: the first run after an install or a source "
+                            "change takes about 1 min longer; later runs load them from the cache"):
+            connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
         connector.evaluations = 0
         mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector))
 
     monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                           lambda: [_joint_force(mbs, exu, joint) for joint in joints])
+                           lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop or StopRequest())
     mbs.SetPostStepUserFunction(monitor)
     mbs.Assemble()
 
@@ -143,7 +152,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     except Exception as error:  # Exudyn raises when a solver gives up
         solved = False
         if not monitor.message:
-            monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, settings, monitor.time, str(error)))
+            monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, str(error)))
     finally:
         wall = time.perf_counter() - started
         progress.close()
@@ -159,7 +168,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         wall_time_s=wall,
     )
     if not solved and not monitor.message:
-        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, settings, monitor.time, _last_line(exudyn_log)))
+        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, _last_line(exudyn_log)))
     if monitor.message:
         monitor.record_final()
     out_t, out_q, out_v, out_pairs, out_work, out_constraints = monitor.outputs()
@@ -202,13 +211,14 @@ def _joint_force(mbs, exu, joint) -> float:
     return float(np.linalg.norm(mbs.GetObjectOutput(joint, output)))
 
 
-def _solver_failure(scene, settings, t, detail) -> str:
+def _solver_failure(scene, solver, t, detail) -> str:
+    settings = solver.exudyn
     what = "Newton's method did not converge" if settings.implicit else "the solver stopped"
     hint = ""
     if settings.implicit and any(p.law.friction_law == "dead_zone" for p in scene.pairs):
         hint = " The dead_zone friction law is discontinuous, which Newton's method cannot follow: use erf."
-    return (f"t = {t:.6g} s: Exudyn's {settings.method} failed: {what} ({detail}). Likely fix: reduce the step "
-            f"(now {settings.step:g} s).{hint}")
+    return (f"t = {t:.6g} s: Exudyn's {settings.method} failed: {what} ({detail}). Likely fix: "
+            f"{smaller_step(solver)}.{hint}")
 
 
 def _last_line(text: str) -> str:
@@ -220,12 +230,12 @@ class _StepMonitor:
     """PostStepUserFunction: per-pair state, events, output at output instants, guards, progress."""
 
     def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                 constraint_forces):
-        self.scene, self.packed, self.reference = scene, packed, reference
+                 constraint_forces, stop):
+        self.scene, self.packed, self.reference, self.stop = scene, packed, reference, stop
         self.latched, self.events, self.bounds = latched, events, bounds
         self.solver, self.progress, self.constraint_forces = solver, progress, constraint_forces
         self.output_times = output_grid(end_time, solver.output_interval)
-        self.margin = 1e-3 * solver.exudyn.step
+        self.margin = 1e-3 * min(solver.exudyn.step, solver.output_interval)
         self.rows: list[tuple] = []
         self.message, self.failure, self.time = "", Failure.NONE, 0.0
         self.q, self.v = reference.copy(), np.array([b.velocity for b in scene.bodies], dtype=float).ravel()
@@ -249,14 +259,13 @@ class _StepMonitor:
         data = mbs.systemData
         q = self.reference + np.asarray(data.GetODE2Coordinates())[: self.reference.size]
         v = np.asarray(data.GetODE2Coordinates_t())[: self.reference.size]
-        step = self.solver.exudyn.step
         finite = np.isfinite(q) & np.isfinite(v)
         speed = np.hypot(v[0::3], v[1::3])
         if not finite.all() or speed.max() > self.solver.speed_limit:
             coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
             kind = Failure.BLOWUP if finite.all() else Failure.NONFINITE
             return self.fail(kind, diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
-                                              step, blown_up=finite.all()))
+                                                    blown_up=finite.all()))
         h = t - self.time
         self.q, self.v, self.time = q, v, t
         power = np.array(self._evaluate(t))  # before the latch update: the forces of the step just taken
@@ -264,12 +273,14 @@ class _StepMonitor:
         self._power = power
         _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
-            return self.fail(Failure.PENETRATION, penetration_message(self.scene, self.solver, t, worst, q, v, step))
+            return self.fail(Failure.PENETRATION, penetration_message(self.scene, self.solver, t, worst, q, v))
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
             self._record(t)
         self._calls += 1
         if self._calls % self._progress_every == 0:
             self.progress.update(t)
+        if self.stop.is_set():
+            return self.fail(Failure.INTERRUPTED, interrupted_message(t))
         return True
 
     def fail(self, failure: Failure, message: str) -> bool:

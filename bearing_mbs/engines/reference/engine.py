@@ -11,7 +11,8 @@ import numpy as np
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.contact.state import initial_pair_state
 from bearing_mbs.core.failures import Failure
-from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.interrupt import StopRequest
+from bearing_mbs.core.progress import ProgressMeter, notice_if_slow
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import pack_scene
@@ -39,13 +40,19 @@ from bearing_mbs.engines.reference.integrators import integrate
 from bearing_mbs.engines.reference.tableaus import TABLEAUS
 from bearing_mbs.spec.solver import SolverSpec
 
-_CHUNKS = 100
+#: What a user reads while the driver compiles (the first run after an install or a change of the kernels).
+COMPILING = ("compiling the reference engine's kernels: the first run after an install or a source change takes "
+             "about 1-2 min longer; later runs load them from the cache")
+
+#: Wall time [s] of one compiled chunk between two looks at the progress meter and the stop request.
+_CHUNK_WALL_TIME = 0.2
 
 
 def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
-                       spec: dict | None = None) -> Result:
+                       spec: dict | None = None, stop: StopRequest | None = None) -> Result:
     settings = solver.reference
     progress = progress or ProgressMeter()
+    stop = stop or StopRequest()
     packed = pack_scene(scene)
     n, pair_count, constraint_count = scene.coordinate_count, len(scene.pairs), len(scene.constraints)
     q, v = scene.initial_state()
@@ -66,7 +73,8 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
         return integrate(method, packed, tableau, controls, state, verlet, stages, workspace, output, t, t_stop,
                          h_adaptive, index)
 
-    run(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
+    with notice_if_slow(COMPILING):
+        run(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
 
     def record(t):
         """The state at t as an output row (initial state, or the state where a run stopped), and its
@@ -86,12 +94,19 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     progress.start(end_time, f"{scene.name} (reference {settings.method})")
     t, h_adaptive, index, status, culprit = 0.0, settings.step, 1, RUNNING, -1
     started = time.perf_counter()
+    samples = 1  # output intervals per chunk, grown until a chunk takes about _CHUNK_WALL_TIME
     try:
-        for chunk_end in np.linspace(0, times.size - 1, min(_CHUNKS, times.size - 1) + 1)[1:].round().astype(int):
-            t, h_adaptive, index, status, culprit = run(t, times[chunk_end], h_adaptive, index)
+        while index < times.size and not stop.is_set():
+            chunk_started = time.perf_counter()
+            t, h_adaptive, index, status, culprit = run(t, times[min(index + samples, times.size) - 1], h_adaptive,
+                                                        index)
             progress.update(t)
             if status != RUNNING:
                 break
+            elapsed = time.perf_counter() - chunk_started
+            samples = max(1, min(4 * samples, int(samples * _CHUNK_WALL_TIME / max(elapsed, 1e-6))))
+        if status == RUNNING and index < times.size:
+            status = int(Failure.INTERRUPTED)
     finally:
         wall = time.perf_counter() - started
         progress.close()
@@ -101,7 +116,10 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
                   force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall)
     failure = Failure(status)
     message = ""
-    if failure != Failure.NONE:
+    if failure == Failure.INTERRUPTED:  # stopped at an output instant: keep the instants computed
+        message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
+        series = [a[:index] for a in series]
+    elif failure != Failure.NONE:
         message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
         final = record(t)[:6]  # keep the state where the run stopped
         series = [np.concatenate([a[:index], np.asarray(b)[None]]) for a, b in zip(series, final)]

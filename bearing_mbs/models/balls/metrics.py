@@ -12,6 +12,10 @@ from bearing_mbs.analysis import (
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 
+#: Units of :func:`balls_metrics`' entries.
+UNITS = {"max_penetration": "m", "restitution_effective": "-", "final_velocity_x": "m/s", "final_position_y": "m",
+         "energy_initial": "J", "energy_final": "J", "max_constraint_violation": "m", "energy_balance_error": "-"}
+
 
 def balls_metrics(spec, scene: Scene, result: Result) -> dict:
     """Summary metrics of the balls model (first ball for the kinematic ones)."""

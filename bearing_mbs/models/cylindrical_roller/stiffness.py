@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.io.json import write_json
+from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models.cylindrical_roller.build import group_law
 from bearing_mbs.models.cylindrical_roller.drivetrain import RPM, steady_speed
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
@@ -95,9 +95,10 @@ def solve_scenario(spec: Spec, applied=None, *, speed: float | None = None, firs
 
 
 def stiffness_summary(spec: Spec, solution, law: str) -> dict:
-    """summary.json of ``bearing-mbs stiffness``: SI units, angles in degrees from +x towards +y."""
-    angles = np.degrees(np.angle(np.exp(1j * solution.roller_angles)))
-    return {
+    """summary.json of ``bearing-mbs stiffness``: SI units (its ``units`` map), angles in degrees from +x towards +y
+    in [0, 360) (the convention of every output)."""
+    angles = np.mod(np.degrees(solution.roller_angles), 360.0)
+    summary = {
         "scenario": spec.scenario.name,
         "model": "quasi-static planar (solve_radial)",
         "raceway_law": law,
@@ -108,11 +109,11 @@ def stiffness_summary(spec: Spec, solution, law: str) -> dict:
         "diametral_clearance": solution.rollers.diametral_clearance,
         "load": [float(v) for v in solution.load],
         "applied_radial_load": spec.load.radial,
-        "applied_load_angle_deg": spec.load.angle,
+        "applied_load_angle_deg": float(np.mod(spec.load.angle, 360.0)),
         "ring_weight": ring_weight(spec),
         "shaft_speed_rpm": solution.shaft_speed / RPM,
         "centrifugal_force": solution.centrifugal_force,
-        "first_roller_angle_deg": float(np.degrees(solution.rollers.first_roller_angle)),
+        "first_roller_angle_deg": float(np.mod(np.degrees(solution.rollers.first_roller_angle), 360.0)),
         "radial_displacement": float(np.hypot(*solution.displacement)),
         "displacement": [float(v) for v in solution.displacement],
         "roller_loads": [{"angle_deg": float(a), "load_N": float(q), "outer_load_N": float(qo)}
@@ -123,6 +124,19 @@ def stiffness_summary(spec: Spec, solution, law: str) -> dict:
         "iterations": solution.iterations,
         "residual": solution.residual,
     }
+    summary["units"] = {key: unit for key, unit in STIFFNESS_UNITS.items() if key in summary}
+    return summary
+
+
+#: Units of the stiffness summary's entries.
+STIFFNESS_UNITS = {
+    "inner_stiffness": "N/m^n", "inner_exponent": "-", "outer_stiffness": "N/m^n", "outer_exponent": "-",
+    "diametral_clearance": "m", "load": "N", "applied_radial_load": "N", "applied_load_angle_deg": "deg",
+    "ring_weight": "N", "shaft_speed_rpm": "rpm", "centrifugal_force": "N", "first_roller_angle_deg": "deg",
+    "radial_displacement": "m", "displacement": "m", "roller_loads": "angle_deg: deg, load_N: N, outer_load_N: N",
+    "max_roller_load": "N", "loaded_zone_half_angle_deg": "deg", "stiffness_matrix": "N/m", "iterations": "count",
+    "residual": "N",
+}
 
 
 def write_stiffness(spec: Spec, directory: str | Path, figures: bool = True) -> dict:
@@ -131,6 +145,7 @@ def write_stiffness(spec: Spec, directory: str | Path, figures: bool = True) -> 
     summary = stiffness_summary(spec, solution, law)
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
+    summary = rounded(json_safe(summary))
     write_json(directory / SUMMARY_FILE, summary)
     if figures:
         speed = f", {summary['shaft_speed_rpm']:.4g} rpm" if solution.shaft_speed else ""

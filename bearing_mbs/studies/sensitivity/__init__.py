@@ -18,7 +18,7 @@ See ``docs/sensitivity.md``.
 """
 
 from bearing_mbs.studies.sensitivity.analysis import Indices, analyze
-from bearing_mbs.studies.sensitivity.execution import EvaluationStats, TqdmRunProgress, connect, evaluate, run_table
+from bearing_mbs.studies.sensitivity.execution import EvaluationStats, connect, evaluate, run_table
 from bearing_mbs.studies.sensitivity.models import (
     BUILTIN_MODELS,
     IshigamiModel,
@@ -58,7 +58,6 @@ __all__ = [
     "SimulationModel",
     "Study",
     "StudyResult",
-    "TqdmRunProgress",
     "analyze",
     "connect",
     "evaluate",

@@ -34,23 +34,6 @@ CONNECT_TIMEOUT = 5.0
 WORKERS_TIMEOUT = 60.0
 
 
-class TqdmRunProgress(ProgressMeter):
-    """A tqdm bar over finished runs, with rate and estimated time of arrival (for the command line)."""
-
-    def start(self, total: float, description: str = "") -> None:
-        from tqdm import tqdm
-
-        self._bar = tqdm(total=int(total), desc=description, unit="run", smoothing=0.1)
-        self._value = 0
-
-    def update(self, value: float) -> None:
-        self._bar.update(int(value) - self._value)
-        self._value = int(value)
-
-    def close(self) -> None:
-        self._bar.close()
-
-
 @contextlib.contextmanager
 def connect(scheduler: str | None = None, workers: int | None = None, timeout: float = CONNECT_TIMEOUT):
     """A Dask client. Without ``scheduler``: a local cluster of ``workers`` processes (default: one per

@@ -71,7 +71,8 @@ def _overview(study: Study, table: pd.DataFrame) -> list[str]:
               "sobol": f"Sobol'–Saltelli, N = {m.samples}" + (", second order" if m.second_order else "")}
     runs = table.drop_duplicates("key")
     counts = runs["status"].value_counts()
-    statuses = ", ".join(f"{counts[s]} {s}" for s in ("success", "failed", "error", "missing") if s in counts)
+    statuses = ", ".join(f"{counts[s]} {s}" for s in ("success", "suspect", "failed", "interrupted", "error", "missing")
+                         if s in counts)
     cost = float(np.nansum(runs["wall_time_s"].astype(float)))
     analysis = "none (table and scatter plots)" if m.analyzer == "none" else \
         f"{m.analyzer}, {100 * m.conf_level:g} % confidence intervals from {m.resamples} bootstrap resamples"
@@ -163,9 +164,13 @@ def _scatter_figure(study: Study, table: pd.DataFrame, output: str, directory: P
     columns = min(n, 4)
     rows = math.ceil(n / columns)
     fig, axes = new_figure(rows, columns, figsize=(3.2 * columns, 2.8 * rows), squeeze=False, sharey=True)
-    ok = table["status"] == "success"
+    ok = table["status"].isin(("success", "suspect"))
+    suspect = table["status"] == "suspect"
     for ax, p in zip(axes.ravel(), study.parameters):
         ax.scatter(table.loc[ok, p.name], table.loc[ok, output], s=8, c="k")
+        if suspect.any():
+            ax.scatter(table.loc[suspect, p.name], table.loc[suspect, output], s=14, facecolors="none",
+                       edgecolors="C1", label="suspect")
         if (~ok).any():
             ax.scatter(table.loc[~ok, p.name], np.zeros(int((~ok).sum())), s=12, c="r", marker="x")
         if p.distribution == "logunif":
@@ -177,7 +182,8 @@ def _scatter_figure(study: Study, table: pd.DataFrame, output: str, directory: P
         ax.set_ylabel(output)
     for ax in axes.ravel()[n:]:
         ax.set_visible(False)
-    fig.suptitle(f"{study.name}: {output}" + (" (x at 0: runs without a value)" if (~ok).any() else ""))
+    fig.suptitle(f"{study.name}: {output}" + (" (x at 0: runs without a value)" if (~ok).any() else "")
+                 + (" (orange rings: suspect runs)" if suspect.any() else ""))
     return save_figure(fig, directory / f"scatter_{_slug(output)}.png", dpi=FIGURE_DPI).name
 
 

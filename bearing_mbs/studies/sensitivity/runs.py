@@ -21,10 +21,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from bearing_mbs.core.result import FAILED, STATUSES, SUCCESS
 from bearing_mbs.studies.sensitivity.models import RunModel
 from bearing_mbs.studies.sensitivity.study import Study
 
-SUCCESS, FAILED, ERROR = "success", "failed", "error"
+#: A run that raised instead of returning a result.
+ERROR = "error"
 #: A run is attempted at most this often: a failure is retried once, then recorded with its error.
 MAX_ATTEMPTS = 2
 
@@ -73,7 +75,8 @@ def plan(study: Study, X: np.ndarray) -> tuple[list[str], dict[str, Run]]:
 
 def evaluate_runs(model: RunModel, runs: list[Run], keep_results: bool = False) -> list[dict]:
     """Evaluate runs one after the other (one Dask task). Each outcome: key, attempt, status
-    (``success``, ``failed``: the simulation stopped early, ``error``: it raised), summary, error,
+    (a run's own: ``success``, ``suspect``: it reached its end but failed a check, ``failed``: it stopped early,
+    ``interrupted``; or ``error``: it raised), summary, error,
     wall_time_s [s], worker, files (name → bytes)."""
     outcomes = []
     for run in runs:
@@ -82,7 +85,7 @@ def evaluate_runs(model: RunModel, runs: list[Run], keep_results: bool = False) 
         try:
             summary, files = model.evaluate(run.inputs, keep_results)
             status = summary.get("status", SUCCESS)
-            outcome.update(status=FAILED if status == FAILED else SUCCESS, summary=summary, error=None,
+            outcome.update(status=status if status in STATUSES else FAILED, summary=summary, error=None,
                            files=files)
         except Exception as error:  # a run's failure is its result, never the study's
             outcome.update(status=ERROR, summary=None, files={},
