@@ -13,7 +13,7 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 demo: $(STAMP)
-	$(BIN)/bearing-mbs run scenarios/seed_hss_startup.toml --out out/demo
+	$(BIN)/bearing-mbs run scenarios/seed_hss_startup.toml --out out/demo --overwrite
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
@@ -26,14 +26,14 @@ bench: $(STAMP)
 
 # The studies of docs/quasistatic.md, docs/skidding.md and docs/cage-models.md (--out docs/figures redraws the docs').
 static-check: $(STAMP)
-	$(BIN)/bearing-mbs static-check scenarios/static_check.toml --out out/static_check
+	$(BIN)/bearing-mbs static-check scenarios/static_check.toml --out out/static_check --overwrite
 
 skidding: $(STAMP)
-	$(BIN)/bearing-mbs skidding scenarios/seed_hss_steady.toml --out out/skidding \
+	$(BIN)/bearing-mbs skidding scenarios/seed_hss_steady.toml --out out/skidding --overwrite \
 		--set scenario.end_time=0.3 --set analysis.start=0.1
 
 cage-models: $(STAMP)
-	$(BIN)/bearing-mbs cage-models scenarios/cage_models.toml --out out/cage_models
+	$(BIN)/bearing-mbs cage-models scenarios/cage_models.toml --out out/cage_models --overwrite
 
 clean:
 	rm -rf $(VENV) out .pytest_cache

@@ -23,13 +23,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cases import SCENARIOS
 
 from bearing_mbs.cli import main
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.result import FAILED, INTERRUPTED, SUCCESS, SUSPECT, Result
 from bearing_mbs.models import load_spec
 from bearing_mbs.runner import run_spec
 from bearing_mbs.runner.checks import run_checks
+
+from cases import SCENARIOS
 
 STEADY = str(SCENARIOS / "seed_hss_steady.toml")
 SHORT = ["--set", "scenario.end_time=0.002", "--set", "analysis.start=0.001"]
@@ -169,9 +171,7 @@ def test_an_energy_audit_out_of_bound_is_suspect(finished):
 
 
 def test_a_failed_run_is_never_success(finished):
-    spec, scene, result = finished
-    from bearing_mbs.core.failures import Failure
-
+    result = finished[2]
     for failure in Failure:
         if failure != Failure.NONE:
             assert dataclasses.replace(result, failure=failure).status in (FAILED, INTERRUPTED)

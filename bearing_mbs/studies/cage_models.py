@@ -71,8 +71,10 @@ def compare(base: Spec, cases: dict[str, dict] | None = None,
     if base.scenario.model != "bearing":
         raise SpecError("scenario.model", base.scenario.model, "the cage-model comparison varies a bearing scenario")
     specs = {label: with_overrides(base, changes) for label, changes in (CASES if cases is None else cases).items()}
+    progress = progress or ProgressMeter()
     runs = []
-    for label, spec in specs.items():
+    for k, (label, spec) in enumerate(specs.items()):
+        progress.next_run(k + 1, len(specs))
         scene, result = run_spec(spec, progress)
         runs.append(ModelRun(label, spec, scene, result, summarize(spec, scene, result)))
         log.info("%s: cage slip %s (%s)", label, runs[-1].summary.get("cage_slip"), runs[-1].summary["status"])

@@ -11,7 +11,8 @@ r"""Work–precision studies: error against cost for every engine, method and st
    ``DIR/work_precision.png``, and ``DIR/summary.json`` / ``DIR/convergence.md`` with the cheapest setting
    reaching each target error and the observed order of each fixed-step ladder.
 
-Norms (relative unless noted), over the window ``[start, end]``:
+Every run integrates to the end of the window (``[convergence] end``, else the scenario's end time). Norms
+(relative unless noted), over the window ``[start, end]``:
 
 * ``positions``: max |Δx|, |Δy| of the bodies' centres, over the smallest ball radius (balls model) or over
   the largest reference inner-ring displacement (bearing model);
@@ -98,9 +99,15 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
     return norms
 
 
+def end_time(spec: Spec) -> float:
+    """How far the study integrates [s]: the end of its window (``[convergence] end``), else the scenario's."""
+    study = spec.convergence
+    return study.end if study is not None and study.end is not None else spec.scenario.end_time
+
+
 def run_setting(spec: Spec, scene, run: RunSettings, step, tolerance, progress=None) -> Result:
     solver = solver_for(spec, run, tolerance if run.adaptive else step)
-    return simulate(scene, solver, spec.scenario.end_time, progress)
+    return simulate(scene, solver, end_time(spec), progress)
 
 
 def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = None) -> dict:
@@ -111,13 +118,19 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
     directory.mkdir(parents=True, exist_ok=True)
     settings = spec.convergence
     scene = build_scene(spec)
+    if settings.end is not None and settings.end > spec.scenario.end_time:
+        raise SpecError("convergence.end", settings.end, f"<= the scenario's end time {spec.scenario.end_time:g} s")
     if spec.scenario.model == "balls" and settings.norm in BEARING_NORMS:
         raise SpecError("convergence.norm", settings.norm, "the balls model has the positions norm only")
 
+    progress = progress or ProgressMeter()
+    total = 1 + (settings.check is not None) + sum(len(ladder(run)) for run in settings.runs)
+    progress.next_run(1, total)
     reference = _cached_run(spec, scene, settings.reference, directory / "reference.npz", progress)
     summary = {"scenario": spec.scenario.name, "norm": settings.norm, "reference": _describe(settings.reference),
                "reference_wall_time_s": reference.stats.wall_time_s}
     if settings.check is not None:
+        progress.next_run(2, total)
         check = _cached_run(spec, scene, settings.check, directory / "check.npz", progress)
         summary["check"] = _describe(settings.check)
         summary["reference_error"] = errors(spec, scene, check, reference)
@@ -130,11 +143,14 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
     table = directory / "convergence.csv"
     rows = read_rows(table)
     done = {(r["engine"], r["solver"], r["step"], r["tolerance"]) for r in rows}
+    index = 1 + (settings.check is not None)
     for run in settings.runs:
         for step, tolerance in ladder(run):
+            index += 1
             key = (run.engine, run.method, text(step), text(tolerance))
             if key in done:
                 continue
+            progress.next_run(index, total)
             result = run_setting(spec, scene, run, step, tolerance, progress)
             norms = errors(spec, scene, result, reference) if result.success else {}
             row = {"engine": run.engine, "solver": run.method, "step": text(step), "tolerance": text(tolerance),
@@ -143,8 +159,8 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
                    "status": result.status, **{n: norms.get(n, "") for n in COLUMNS[9:]}}
             append_row(table, row, COLUMNS)
             rows.append({k: text(v) if not isinstance(v, str) else v for k, v in row.items()})
-            log.info("%s %s step=%s tol=%s: error %.3g in %.3g s", run.engine, run.method, step, tolerance,
-                     row["error"], result.stats.wall_time_s)
+            log.info("run %d/%d: %s %s step=%s tol=%s: %s, error %.3g in %.3g s", index, total, run.engine,
+                     run.method, step, tolerance, result.status, row["error"], result.stats.wall_time_s)
 
     summary["cheapest"] = cheapest(rows, settings.targets)
     summary["orders"] = observed_orders(rows)

@@ -64,15 +64,19 @@ def check_base(base: Spec, loads) -> None:
         positive("loads", load)
 
 
-def sweep_loads(base: Spec, loads=LOADS, progress: ProgressMeter | None = None) -> list[dict]:
+def sweep_loads(base: Spec, loads=LOADS, progress: ProgressMeter | None = None, counted=(0, 0)) -> list[dict]:
     """Run ``base`` at each radial load of ``loads`` [N] with its own cage model; one row per load (keys:
     :data:`COLUMNS`): loads [N], cage slip (window mean and its two halves) [-], the resolution of the window
     [-], largest inner-raceway slip ratio [-], largest roller and pocket force [N], largest cage eccentricity
-    [m], cost and status. ``load_fraction`` is the load over the base scenario's."""
+    [m], cost and status. ``load_fraction`` is the load over the base scenario's. ``counted``: (runs before
+    these, runs in the whole study), for the progress meter."""
     check_base(base, loads)
+    progress = progress or ProgressMeter()
+    before, total = counted if counted[1] else (0, len(loads))
     rows = []
-    for load in loads:
+    for k, load in enumerate(loads):
         spec = with_overrides(base, {"load.radial": float(load)})
+        progress.next_run(before + k + 1, total)
         scene, result = run_spec(spec, progress)
         rows.append(sweep_row(spec, scene, result, base.load.radial))
         log.info("%s cage, %g N: cage slip %.4g (%s)", spec.cage.model, load, rows[-1]["cage_slip"],
@@ -87,7 +91,9 @@ def sweep(base: Spec, loads=LOADS, cages: dict[str, dict] | None = None,
     cages = CAGES if cages is None else cages
     check_base(base, loads)
     variants = {name: with_overrides(base, selection) for name, selection in cages.items()}  # validated first
-    return {name: sweep_loads(spec, loads, progress) for name, spec in variants.items()}
+    total = len(variants) * len(loads)
+    return {name: sweep_loads(spec, loads, progress, (k * len(loads), total))
+            for k, (name, spec) in enumerate(variants.items())}
 
 
 def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:

@@ -198,15 +198,21 @@ class CellRunner:
                 probe = Probe(setting, "failed", failure_reason(result.failure), wall_time_s=wall,
                               steps=result.stats.steps, message=result.message)
         self.probes[key] = probe
-        log.info("%s %s %s=%.3g: %s %s", self.engine, self.method, "tolerance" if self.adaptive else "step",
-                 setting, probe.status, probe.reason)
+        log.debug("%s %s %s=%.3g: probe %s %s", self.engine, self.method, "tolerance" if self.adaptive else "step",
+                  setting, "ran to its end" if probe.status == "ok" else probe.status, probe.reason)
         return probe
 
     def finer(self, setting: float) -> float:
         return refined_setting(setting, self.settings.refinement, self.adaptive)
 
     def verdict(self, setting: float) -> tuple[str, str]:
-        """("pass" | "fail" | "unknown", reason) of one setting."""
+        """("pass" | "fail" | "unknown", reason) of one setting (logged)."""
+        state, reason = self._verdict(setting)
+        log.info("%s %s %s=%.3g: %s%s", self.engine, self.method, "tolerance" if self.adaptive else "step", setting,
+                 state, f" ({reason})" if reason else "")
+        return state, reason
+
+    def _verdict(self, setting: float) -> tuple[str, str]:
         probe = self.run(setting)
         if probe.status == "skipped":
             return "unknown", probe.reason
@@ -368,8 +374,10 @@ def study(base: Spec, directory: str | Path, cases=CASE_NAMES, solvers=SOLVERS,
     rows = read_rows(table)
     done = {(r["case"], r["engine"], r["solver"]) for r in rows}
     by_name = {case.name: case for case in CASES}
+    total, cell = len(cases) * len(solvers), 0
     for name in cases:
         if all((name, engine, method) in done for engine, method in solvers):
+            cell += len(solvers)
             continue
         spec = case_spec(base, by_name[name])
         end_time = probe_time(spec, build_scene(spec), settings)
@@ -377,6 +385,7 @@ def study(base: Spec, directory: str | Path, cases=CASE_NAMES, solvers=SOLVERS,
         scene = build_scene(spec)
         advice = advise(scene)
         for engine, method in solvers:
+            cell += 1
             if (name, engine, method) in done:
                 continue
             duration, cell_spec = end_time, spec
@@ -391,8 +400,8 @@ def study(base: Spec, directory: str | Path, cases=CASE_NAMES, solvers=SOLVERS,
                    **run_cell(cell_spec, scene, engine, method, duration, settings)}
             rows.append({k: text(row.get(k)) for k in COLUMNS})
             append_row(table, rows[-1], COLUMNS)
-            log.info("%s | %s %s: %s (advised %s, largest pass %s)", name, engine, method, row["verdict"],
-                     row["advised_limit"], row["largest_pass"])
+            log.info("cell %d/%d: %s | %s %s: %s (advised %s, largest pass %s)", cell, total, name, engine, method,
+                     row["verdict"], row["advised_limit"], row["largest_pass"])
     rows = [r for r in rows if r["case"] in cases and (r["engine"], r["solver"]) in set(solvers)]
     summary = summarize(rows)
     summary["scenario"] = base.scenario.name
