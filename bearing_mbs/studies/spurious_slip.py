@@ -166,11 +166,12 @@ def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, resul
         if spurious:
             limit = advise(scene).recommended(solver.engine, solver.active.method)
             target = limit if limit and limit < step else finer_step / refinement
+            unit = "" if solver.active.adaptive else " s"
             switch = "" if getattr(solver.active, "implicit", False) else \
                 ", or switch to Exudyn's generalized_alpha"
             message = (f"{detail}: the slip is spurious (its level changes by {found['difference']:.3g} m/s, more "
                        f"than {SLIP_TOLERANCE:g} v_reg = {SLIP_TOLERANCE * pair.law.regularisation_speed:.3g} m/s, "
-                       f"when the {what} is refined {refinement:g}x). Likely fix: a {what} of {target:.2g} "
+                       f"when the {what} is refined {refinement:g}x). Likely fix: a {what} of {target:.2g}{unit} "
                        f"(bearing-mbs advise){switch}.")
         else:
             message = f"slip converged: the largest change of a slip level is {found['difference']:.3g} m/s ({detail})"

@@ -54,7 +54,7 @@ def bearing_figures(spec, scene, result, directory) -> list[Path]:
     for name, draw in drawers:
         figure = draw(spec, scene, result)
         paths.append(save_figure(figure, directory / name, dpi=DPI))
-    log.info("%s: wrote %d figures to %s", scene.name, len(paths), directory)
+    log.debug("%s: drew %d figures", scene.name, len(paths))
     return paths
 
 
