@@ -10,6 +10,8 @@ import logging
 import os
 from pathlib import Path
 
+import numpy as np
+
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
@@ -36,6 +38,7 @@ def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, 
     """Build the scene (all validation happens here, before any simulation), run it and check the result."""
     scene = build_scene(spec)
     require_output_fits(scene, spec.solver, spec.scenario.end_time)
+    require_initial_speeds_within_limit(scene, spec.solver)
     result = simulate_advised(scene, spec.solver, spec.scenario.end_time, progress, spec=to_mapping(spec))
     warnings = MODELS[spec.scenario.model].metrics(spec, scene, result).get("warnings") or []
     result.checks = run_checks(scene, spec.solver, spec.scenario.end_time, result, warnings)
@@ -61,6 +64,18 @@ def require_output_fits(scene: Scene, solver: SolverSpec, end_time: float) -> No
         raise SpecError("solver.output_interval", solver.output_interval,
                         f">= {smallest:.3g} s: {instants:.3g} output instants of {per_instant} bytes would need "
                         f"{needed / 2**30:.3g} GiB, more than {OUTPUT_MEMORY_SHARE:.0%} of this machine's memory")
+
+
+def require_initial_speeds_within_limit(scene: Scene, solver: SolverSpec) -> None:
+    """Refuse, before anything runs, a body that starts faster than the run's speed guard (it would stop the run
+    at t = 0 as a divergence)."""
+    _, v = scene.initial_state()
+    speeds = np.hypot(v[0::3], v[1::3])
+    if speeds.size and speeds.max() > solver.speed_limit:
+        body = scene.bodies[int(np.argmax(speeds))].name
+        raise SpecError("solver.speed_limit", solver.speed_limit,
+                        f"above the fastest initial body speed, {speeds.max():.3g} m/s of {body!r} (or a lower speed "
+                        f"in [drive])")
 
 
 def simulate_advised(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,

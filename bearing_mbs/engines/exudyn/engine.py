@@ -130,8 +130,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     if (scene.pairs and not native) or scene.forces:
         # the other force elements next to native contacts go through the compiled kernel
         connector = ForceConnector(force_scene, reference, latched, compiled=settings.connector != "python")
-        with notice_if_slow("compiling the force kernels for Exudyn: the first run after an install or a source "
-                            "change takes about 1 min longer; later runs load them from the cache"):
+        with notice_if_slow("compiling the force kernels for Exudyn (once after an install or a source change, "
+                            "about 5 s; later runs load them from the cache)"):
             connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
         connector.evaluations = 0
         mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector))
