@@ -10,12 +10,14 @@ References:
 * constraint Jacobians and γ = −Ġq̇ against central finite differences (1e-6 relative).
 """
 
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
 from bearing_mbs.contact import twin
+from bearing_mbs.core.scene import OrbitConstraint, PointOnLineConstraint
 from bearing_mbs.elements import Load, VelocityServo, pack_scene, scene_counts
 from bearing_mbs.engines.reference.constraints import constraint_rows
 from bearing_mbs.models import build_scene, load_spec, spec_from_mapping
@@ -191,9 +193,21 @@ def test_gear_train_acceleration_solves_equations_41_and_42():
     assert alpha1 > 0
 
 
-def test_constraint_jacobian_and_gamma_match_finite_differences():
+def _as_point_on_line(scene):
+    """The constraint cage with each roller on its pocket's line through the cage centre instead (the other
+    kind the builder does not use, checked the same way)."""
+    lines = tuple(PointOnLineConstraint(c.name, c.body_a, c.body_b, (0.0, 0.0), c.direction)
+                  for c in scene.constraints)
+    return dataclasses.replace(scene, constraints=lines)
+
+
+@pytest.mark.parametrize("kind", ["orbit", "point_on_line"])
+def test_constraint_jacobian_and_gamma_match_finite_differences(kind):
     rng = np.random.default_rng(7)
     scene = scene_of("cage.model=constraint")
+    assert all(isinstance(c, OrbitConstraint) for c in scene.constraints)
+    if kind == "point_on_line":
+        scene = _as_point_on_line(scene)
     constraints = pack_scene(scene).constraints
     q, v = scene.initial_state()
     q = q + rng.normal(scale=1e-3, size=q.size)

@@ -116,8 +116,21 @@ class PointOnLineConstraint:
     direction: tuple[float, float]
 
 
+@dataclass(frozen=True)
+class OrbitConstraint:
+    """The centre of body b stays on the ray from the world origin (the bearing axis) at the angle
+    θ_a + ``angle`` [rad]: b's orbital angle follows a's rotation, whatever a's translation. ``direction`` is
+    (cos angle, sin angle), the ray's direction in a's frame (the constraint cage: a roller held at its pocket's
+    orbital angle, so that the cage's eccentricity on its land imposes no orbital speed on the rollers)."""
+
+    name: str
+    body_a: int
+    body_b: int
+    direction: tuple[float, float]
+
+
 #: Constraint kinds in the order of their integer codes in compiled code.
-CONSTRAINT_KINDS = (DistanceConstraint, PointOnLineConstraint)
+CONSTRAINT_KINDS = (DistanceConstraint, PointOnLineConstraint, OrbitConstraint)
 
 #: What an engine can record; a scene lists only what it needs (see :meth:`Scene.sensors`).
 SENSORS = ("bodies", "pairs", "constraints", "energy")
@@ -151,7 +164,7 @@ class Scene:
     name: str
     bodies: tuple[Body, ...]
     pairs: tuple[ContactPair, ...] = ()
-    constraints: tuple[DistanceConstraint | PointOnLineConstraint, ...] = ()
+    constraints: tuple[DistanceConstraint | PointOnLineConstraint | OrbitConstraint, ...] = ()
     forces: tuple = ()
     gravity: tuple[float, float] = (0.0, 0.0)
     topology: Topology = field(default_factory=Topology)

@@ -32,7 +32,7 @@ class ConstraintArrays(NamedTuple):
     body_b: np.ndarray  # int64
     length: np.ndarray  # [m], distance constraints
     anchor: np.ndarray  # (C, 2) [m], point-on-line constraints, in a's frame
-    direction: np.ndarray  # (C, 2), point-on-line constraints, unit, in a's frame
+    direction: np.ndarray  # (C, 2), point-on-line and orbit constraints, unit, in a's frame
 
 
 class PackedScene(NamedTuple):

@@ -4,9 +4,12 @@
   ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
 * gravity: ``LoadMassProportional`` per body, only when gravity is non-zero;
 * contacts, loads and drives: see :mod:`.exudyn_connectors`;
-* distance constraints: ``ObjectConnectorDistance``; point-on-line constraints (the constraint cage):
-  ``ObjectJointPrismatic2D`` with ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers
-  reject joints: measured with Exudyn 1.13.6, see docs/engines.md);
+* distance constraints: ``ObjectConnectorDistance``; point-on-line constraints: ``ObjectJointPrismatic2D`` with
+  ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers reject joints: measured with
+  Exudyn 1.13.6, see docs/engines.md); orbit constraints (the constraint cage): the same joint on a *carrier*,
+  a body pinned at the world origin whose angle a ``CoordinateConstraint`` ties to body a's (Exudyn has no joint
+  on a line that turns with one body but is anchored elsewhere). The carrier takes half of a's rotational
+  inertia and a keeps the other half, so the rotation of the pair is a's exactly;
 * per-pair state (latched approach speeds), events, output, the energy audit (trapezoid rule over accepted
   steps) and run guards: a ``PostStepUserFunction``, once per accepted step, calling the same compiled
   :func:`bearing_mbs.contact.state.advance_pair_state` as the reference engine.
@@ -29,7 +32,7 @@ from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter, notice_if_slow
 from bearing_mbs.core.result import Result, Stats
-from bearing_mbs.core.scene import DistanceConstraint, Scene
+from bearing_mbs.core.scene import DistanceConstraint, OrbitConstraint, Scene
 from bearing_mbs.elements import element_forces, pack_scene
 from bearing_mbs.engines.diagnosis import (
     diverged_message,
@@ -46,6 +49,11 @@ from bearing_mbs.engines.exudyn.connectors import (
 )
 from bearing_mbs.spec.fields import SpecError
 from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
+
+
+#: The share of a body's rotational inertia it keeps when an orbit constraint gives it a carrier (the carrier
+#: takes the rest).
+CARRIER_SHARE = 0.5
 
 
 def check_supported(scene: Scene, solver: SolverSpec) -> None:
@@ -88,10 +96,12 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
 
     container = exu.SystemContainer()
     mbs = container.AddSystem()
+    carried = {c.body_a for c in scene.constraints if isinstance(c, OrbitConstraint)}
+    inertia = [b.inertia * (CARRIER_SHARE if i in carried else 1.0) for i, b in enumerate(scene.bodies)]
     nodes = [mbs.AddNode(NodeRigidBody2D(referenceCoordinates=list(b.position), initialVelocities=list(b.velocity)))
              for b in scene.bodies]
-    bodies = [mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=b.mass, inertia=b.inertia))
-              for node, b in zip(nodes, scene.bodies)]
+    bodies = [mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=b.mass, inertia=j))
+              for node, b, j in zip(nodes, scene.bodies, inertia)]
 
     ground_marker = None
     for node, body in zip(nodes, scene.bodies):
@@ -108,15 +118,37 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
             marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
             mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
 
+    carriers: dict[int, int] = {}
+
+    def carrier_of(index):
+        """The carrier of body ``index`` (built on first use)."""
+        if index not in carriers:
+            body = scene.bodies[index]
+            node = mbs.AddNode(NodeRigidBody2D(referenceCoordinates=[0.0, 0.0, body.position[2]],
+                                               initialVelocities=[0.0, 0.0, body.velocity[2]]))
+            carrier = mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=body.mass,
+                                                      inertia=body.inertia * (1 - CARRIER_SHARE)))
+            ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=mbs.AddNode(NodePointGround()), coordinate=0))
+            for c in range(2):  # pinned at the origin
+                mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[
+                    ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))]))
+            mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[  # turning with the body
+                mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=nodes[index], coordinate=2)),
+                mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=2))]))
+            carriers[index] = carrier
+        return carriers[index]
+
     joints = []
     for constraint in scene.constraints:
         if isinstance(constraint, DistanceConstraint):
             markers = [mbs.AddMarker(MarkerBodyPosition(bodyNumber=bodies[i], localPosition=[0, 0, 0]))
                        for i in (constraint.body_a, constraint.body_b)]
             joints.append(mbs.AddObject(ObjectConnectorDistance(markerNumbers=markers, distance=constraint.length)))
-        else:  # the centre of b on a line of a: (p_a − c_b)·n = 0 with n normal to the line, in a's frame
-            on_line = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_a],
-                                                    localPosition=[*constraint.anchor, 0]))
+        else:  # the centre of b on a line of a (or of a's carrier): (p_a − c_b)·n = 0 with n normal to the line
+            orbit = isinstance(constraint, OrbitConstraint)
+            holder = carrier_of(constraint.body_a) if orbit else bodies[constraint.body_a]
+            on_line = mbs.AddMarker(MarkerBodyRigid(bodyNumber=holder,
+                                                    localPosition=[0, 0, 0] if orbit else [*constraint.anchor, 0]))
             centre = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_b], localPosition=[0, 0, 0]))
             dx, dy = constraint.direction
             joints.append(mbs.AddObject(ObjectJointPrismatic2D(markerNumbers=[centre, on_line], axisMarker0=[1, 0, 0],

@@ -8,14 +8,16 @@ each accepted step they project (mass-weighted) back onto the constraint manifol
   until :math:`|g| \le 10^{-14}` × the constraints' length scale;
 * velocities (RATTLE-type): :math:`v \leftarrow v - M^{-1}G^T(GM^{-1}G^T)^{-1}Gv`.
 
-Both kinds are written in metres. With :math:`w = c_b - c_a`, :math:`u = \dot w`, :math:`\omega = \dot\theta_a`:
+All kinds are written in metres. With :math:`w = c_b - c_a`, :math:`u = \dot w`, :math:`\omega = \dot\theta_a`:
 
 * distance L: :math:`g = (|w|^2 - L^2)/(2L)`, :math:`\partial g/\partial c_b = -\partial g/\partial c_a = w/L`,
   :math:`\dot G\dot q = |u|^2/L`;
 * point on a line of body a (point p, unit direction d, both turning with a):
   :math:`g = d \times (c_b - p)`, :math:`\partial g/\partial c_b = -\partial g/\partial c_a = (-d_y, d_x)`,
   :math:`\partial g/\partial\theta_a = -d\cdot w`,
-  :math:`\dot G\dot q = -2\omega\, d\cdot u - \omega^2\, d^\perp\cdot w` with :math:`d^\perp = (-d_y, d_x)`.
+  :math:`\dot G\dot q = -2\omega\, d\cdot u - \omega^2\, d^\perp\cdot w` with :math:`d^\perp = (-d_y, d_x)`;
+* orbit (b on the ray from the world origin along d, which turns with a): the same with :math:`p = 0`,
+  :math:`w = c_b`, :math:`u = \dot c_b`, and no dependence on a's translation.
 
 The tests check G and Ġq̇ against finite differences. Fixed coordinates have zero inverse mass, so neither
 forces nor projections move them.
@@ -30,7 +32,7 @@ from bearing_mbs.contact import kinematics
 
 PROJECTION_TOLERANCE = 1e-14
 MAX_PROJECTION_ITERATIONS = 20
-_DISTANCE, _POINT_ON_LINE = 0, 1
+_DISTANCE, _POINT_ON_LINE, _ORBIT = 0, 1, 2
 
 
 @numba.njit(cache=True)
@@ -38,18 +40,21 @@ def constraint_rows(constraints, q, v, residual, jacobian, gamma):
     """Residuals g [m], Jacobian G (C × n, overwritten) and γ = −Ġq̇ of all constraints."""
     jacobian[:, :] = 0.0
     for k in range(constraints.kind.size):
-        a, b = constraints.body_a[k], constraints.body_b[k]
-        wx, wy = q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1]
-        ux, uy = v[3 * b] - v[3 * a], v[3 * b + 1] - v[3 * a + 1]
-        if constraints.kind[k] == _DISTANCE:
+        a, b, kind = constraints.body_a[k], constraints.body_b[k], constraints.kind[k]
+        translates = kind != _ORBIT  # an orbit is about the world origin: a's translation does not enter
+        wx, wy = q[3 * b] - translates * q[3 * a], q[3 * b + 1] - translates * q[3 * a + 1]
+        ux, uy = v[3 * b] - translates * v[3 * a], v[3 * b + 1] - translates * v[3 * a + 1]
+        if kind == _DISTANCE:
             length = constraints.length[k]
             residual[k] = (wx * wx + wy * wy - length * length) / (2 * length)
             gx, gy = wx / length, wy / length
             gamma[k] = -(ux * ux + uy * uy) / length
         else:
             theta, omega = q[3 * a + 2], v[3 * a + 2]
-            px, py = kinematics.body_point(q[3 * a], q[3 * a + 1], theta, constraints.anchor[k, 0],
-                                           constraints.anchor[k, 1])
+            px = py = 0.0
+            if translates:
+                px, py = kinematics.body_point(q[3 * a], q[3 * a + 1], theta, constraints.anchor[k, 0],
+                                               constraints.anchor[k, 1])
             dx, dy = kinematics.body_vector(theta, constraints.direction[k, 0], constraints.direction[k, 1])
             residual[k] = dx * (q[3 * b + 1] - py) - dy * (q[3 * b] - px)
             gx, gy = -dy, dx
@@ -57,8 +62,9 @@ def constraint_rows(constraints, q, v, residual, jacobian, gamma):
             gamma[k] = 2 * omega * (dx * ux + dy * uy) + omega * omega * (-dy * wx + dx * wy)
         jacobian[k, 3 * b] = gx
         jacobian[k, 3 * b + 1] = gy
-        jacobian[k, 3 * a] = -gx
-        jacobian[k, 3 * a + 1] = -gy
+        if translates:
+            jacobian[k, 3 * a] = -gx
+            jacobian[k, 3 * a + 1] = -gy
 
 
 @numba.njit(cache=True)

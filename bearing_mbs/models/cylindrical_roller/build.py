@@ -6,7 +6,11 @@ ring is fixed: it is the ground. Per roller: an inner-raceway pair (circle–cir
 
 * ``penalty``: four pocket pairs, roller against the document's pocket edges P and Q and their mirrors
   inside the pitch circle (circle–point; see :mod:`bearing_mbs.geometry`);
-* ``constraint``: the roller centre held on its pocket's radial line (a point-on-line constraint);
+* ``constraint``: the roller centre held at its pocket's orbital angle, θ_cage + ψ_k about the bearing axis (an
+  orbit constraint), so that the cage's eccentricity on its land imposes no orbital speed on the rollers: the
+  model of a cage whose pocket play takes up its float on the land. The pockets then turn the cage but do
+  not push it sideways, so a roller-guided constraint cage is held on the axis (its translation fixed) and a
+  land-guided one rests on its land under gravity;
 * ``none``: no cage body, and a roller–roller pair between neighbours (Z pairs).
 
 A land-guided cage adds one cage–land pair. The inner ring turns under a velocity servo or the gear train;
@@ -26,7 +30,7 @@ from bearing_mbs.contact.line_contact import (
     effective_modulus,
     palmgren_stiffness,
 )
-from bearing_mbs.core.scene import GROUND, Body, ContactPair, PointOnLineConstraint, Profile, Scene
+from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, Profile, Scene
 from bearing_mbs.core.topology import Topology
 from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.models.building import initial_gaps, pair_law
@@ -63,7 +67,11 @@ def build_bearing_scene(spec: Spec) -> Scene:
 
     bodies = [Body("inner_ring", geometry.inner_ring_mass, ring_inertia, (0.0, 0.0, 0.0), (0.0, 0.0, inner_speed))]
     if caged:
-        bodies.append(Body("cage", geometry.cage_mass, geometry.cage_inertia, (0.0, 0.0, 0.0), (0.0, 0.0, cage_speed)))
+        # a constraint cage guided by its rollers is centred by them: its orbit constraints do not see its
+        # translation, so nothing else would hold it (on a land, the land does)
+        centred = spec.cage.model == "constraint" and spec.bearing.cage_guidance == "rollers"
+        bodies.append(Body("cage", geometry.cage_mass, geometry.cage_inertia, (0.0, 0.0, 0.0), (0.0, 0.0, cage_speed),
+                           free=(not centred, not centred, True)))
     radius = geometry.pitch_diameter / 2
     for k, psi in enumerate(geometry.roller_angles):
         x, y = radius * math.cos(psi), radius * math.sin(psi)
@@ -91,8 +99,7 @@ def build_bearing_scene(spec: Spec) -> Scene:
                                          radius_b=r_w, anchor=point))
         elif spec.cage.model == "constraint":
             psi = geometry.roller_angles[k]
-            constraints.append(PointOnLineConstraint(f"roller{k}-pocket_line", CAGE, roller, (0.0, 0.0),
-                                                     (math.cos(psi), math.sin(psi))))
+            constraints.append(OrbitConstraint(f"roller{k}-pocket", CAGE, roller, (math.cos(psi), math.sin(psi))))
         else:
             neighbour = first_roller + (k + 1) % geometry.rollers
             add("roller", ContactPair(f"roller{k}-roller{(k + 1) % geometry.rollers}", "circle_circle", roller,
