@@ -24,7 +24,7 @@ test-slow: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py
 
-# The studies of docs/quasistatic.md, docs/skidding.md and docs/cage-models.md (--out docs/figures redraws the docs').
+# The studies of docs/quasistatic.md, docs/skidding.md and docs/cage-models.md (--out docs/figures --overwrite redraws the docs').
 static-check: $(STAMP)
 	$(BIN)/bearing-mbs static-check scenarios/static_check.toml --out out/static_check --overwrite
 

@@ -105,11 +105,13 @@ def test_cage_slip_grows_as_the_load_falls():
     """Skidding at low load, as observed on wind-turbine high-speed-shaft bearings (the primary document's
     motivation and its references [25], [26], [28]): the lubricant's load-independent drag (Palmgren's M0,
     bearing_mbs/lubrication.py) against a traction that falls with the load. Checked on the constraint cage,
-    whose pockets add no play: cage slip must grow at every step down in load (68 kN, 2 kN, 200 N) and be at
+    whose pockets add no play: cage slip must grow at every step down in load (6.8 kN, 2 kN, 200 N) and be at
     least twice as large at the lowest load. (The penalty cage's dry pocket impacts add a load-independent slip
-    of about 0.5 % that masks the trend above a few hundred newtons: docs/cage-models.md.)"""
+    of about 0.5 % that masks the trend above a few hundred newtons: docs/cage-models.md. At the nominal 68 kN
+    the constraint cage's common orbital speed against the 22 µm displaced inner ring, δ/R ≈ 0.02 %, is larger
+    than the drag's creep: docs/skidding.md.)"""
     base = load_spec(STEADY, ["cage.model=constraint", "scenario.end_time=0.1", "analysis.start=0.05"])
-    rows = skidding.sweep_loads(base, (68000.0, 2000.0, 200.0))
+    rows = skidding.sweep_loads(base, (6800.0, 2000.0, 200.0))
     assert all(row["status"] == "success" for row in rows)
     trend = skidding.trend(rows)
     slips = [f"{row['radial_load']:g} N: {100 * row['cage_slip']:.3f} %" for row in rows]
