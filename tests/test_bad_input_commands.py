@@ -8,9 +8,10 @@ the test checks the field and that a value and an allowed range follow, not the 
 from __future__ import annotations
 
 import pytest
-from cases import SCENARIOS
 
 from bearing_mbs.cli import main
+
+from cases import SCENARIOS
 
 STEADY = str(SCENARIOS / "seed_hss_steady.toml")
 BALLS = str(SCENARIOS / "seed_case1.toml")

@@ -18,12 +18,13 @@ means over 0.06–0.12 s, land clearance 0.5 and 1 mm (diametral).
 import dataclasses
 
 import pytest
-from cases import SCENARIOS
 
 from bearing_mbs.core.scene import OrbitConstraint, PointOnLineConstraint
 from bearing_mbs.engines import simulate
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller.metrics import bearing_metrics
+
+from cases import SCENARIOS
 
 CLEARANCES = (5e-4, 1e-3)
 
