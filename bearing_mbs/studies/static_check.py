@@ -57,6 +57,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.scene import Profile
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models import load_spec
 from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
@@ -69,9 +70,11 @@ log = logging.getLogger(__name__)
 ENGINES = ("exudyn", "reference")
 #: The file :func:`write` writes.
 RESULT_FILE = "static_check.json"
-#: Load-ramp shapes s(τ), τ = t/T_r in [0, 1]: ``cosine`` starts and ends with zero slope (the default);
-#: ``linear``'s slope jumps excite the ring's radial mode ~15 times more (2 % oscillations at 5 kN).
-RAMP_SHAPES = {"cosine": lambda tau: 0.5 * (1.0 - np.cos(np.pi * tau)), "linear": lambda tau: tau}
+#: Load-ramp shapes, profiles from 0 to a value over a duration: ``cosine`` starts and ends with zero slope (the
+#: default, :meth:`Profile.smooth_ramp`); ``linear``'s slope jumps excite the ring's radial mode ~15 times more (2 %
+#: oscillations at 5 kN).
+RAMP_SHAPES = {"cosine": Profile.smooth_ramp,
+               "linear": lambda value, duration, points: Profile((0.0, duration), (0.0, value))}
 #: Load levels of the check [N]: light, medium and the seed bearing's nominal 68 kN.
 DEFAULT_LOADS = (5e3, 20e3, 68e3)
 
@@ -114,11 +117,9 @@ def settle_spec(spec: Spec, applied, settings: SettlingSettings = SettlingSettin
     require_bearing(spec)
     fx, fy = (float(v) for v in applied)
     magnitude = math.hypot(fx, fy)
-    tau = np.linspace(0.0, 1.0, settings.ramp_points)
-    shape = RAMP_SHAPES[settings.ramp_shape](tau)
-    load = LoadSpec(radial=magnitude, angle=math.degrees(math.atan2(fy, fx)), profile="table",
-                    times=tuple(float(t) for t in settings.ramp * tau),
-                    values=tuple(float(v) for v in magnitude * shape))
+    ramp = RAMP_SHAPES[settings.ramp_shape](magnitude, settings.ramp, settings.ramp_points)
+    load = LoadSpec(radial=magnitude, angle=math.degrees(math.atan2(fy, fx)), profile="table", times=ramp.times,
+                    values=ramp.values)
     drive = DriveSpec(kind="speed", profile="constant", speed_rpm=0.0, initial_state="rest",
                       servo_time_constant=spec.drive.servo_time_constant)
     end = settings.end_time

@@ -159,9 +159,10 @@ def load_profile(spec: Spec) -> Profile:
     load = spec.load
     end = load.start + load.duration
     if load.profile == "constant":
-        return Profile.constant(load.radial)
+        return Profile.smooth_ramp(load.radial, load.ramp_time) if load.ramp_time else Profile.constant(load.radial)
     if load.profile == "step":
-        return Profile((0.0, load.start, end), (load.radial, load.radial, load.final))
+        ramp = Profile.smooth_ramp(load.radial, load.ramp_time) if load.ramp_time else Profile.constant(load.radial)
+        return Profile((*ramp.times, load.start, end), (*ramp.values, load.radial, load.final))
     if load.profile == "ramp":
         return Profile((0.0, load.start, end), (0.0, 0.0, load.radial))
     return Profile(tuple(load.times), tuple(load.values))

@@ -272,7 +272,10 @@ class LoadSpec:
     radial [N] >= 0 at ``angle`` [deg] (direction of the force on the inner ring; −90 = downwards), scaled
     by ``profile``: ``constant``; ``step`` from ``radial`` to ``final`` [N] at ``start`` over ``duration``
     [s] (a smooth ramp; 0 is not allowed: a jump); ``ramp`` from 0 to ``radial`` over
-    [start, start + duration]; ``table`` (``times`` [s], ``values`` [N]).
+    [start, start + duration]; ``table`` (``times`` [s], ``values`` [N]). ramp_time [s] >= 0: a ``constant`` or
+    ``step`` load applied at t = 0 rises from 0 to ``radial`` over [0, ramp_time] along a half cosine (zero slope
+    at both ends); 0 (the default) applies it at once, a step that rings through the whole run (before ``start``
+    for ``step``).
     """
 
     radial: float = 0.0
@@ -283,9 +286,17 @@ class LoadSpec:
     duration: float = 1e-3
     times: tuple[float, ...] = ()
     values: tuple[float, ...] = ()
+    ramp_time: float = 0.0
 
     def __post_init__(self):
         non_negative("radial", self.radial)
+        non_negative("ramp_time", self.ramp_time)
+        if self.ramp_time > 0:
+            require(self.profile in ("constant", "step"), "ramp_time", self.ramp_time,
+                    f"applies to the constant and step profiles (profile = {self.profile!r}: 0)")
+            if self.profile == "step":
+                require(self.ramp_time <= self.start, "ramp_time", self.ramp_time,
+                        f"<= start = {self.start:g} s (the ramp ends before the step)")
         finite("angle", self.angle)
         one_of("profile", self.profile, LOAD_PROFILES)
         non_negative("final", self.final)
