@@ -27,7 +27,7 @@ RUNS = {
                                           f"solver.exudyn.step={GA_STEP}"],
     "exudyn_generalized_alpha_python": ["solver.engine=exudyn", "solver.exudyn.method=generalized_alpha",
                                         f"solver.exudyn.step={GA_STEP}", "solver.exudyn.connector=python"],
-    "exudyn_rk44_compiled": ["solver.engine=exudyn", "solver.exudyn.method=rk44", f"solver.exudyn.step={EXPLICIT_STEP}"],
+    "exudyn_rk4_compiled": ["solver.engine=exudyn", "solver.exudyn.method=rk4", f"solver.exudyn.step={EXPLICIT_STEP}"],
     "reference_rk4": ["solver.engine=reference", "solver.reference.method=rk4", f"solver.reference.step={EXPLICIT_STEP}"],
 }
 
@@ -46,7 +46,7 @@ def measure(overrides: list[str]) -> dict:
 
 def main() -> dict:
     figures = {name: measure(overrides) for name, overrides in RUNS.items()}
-    per_step = (figures["exudyn_rk44_compiled"]["microseconds_per_step"]
+    per_step = (figures["exudyn_rk4_compiled"]["microseconds_per_step"]
                 / figures["reference_rk4"]["microseconds_per_step"])
     report = {
         "case": "seed_hss_steady, penalty cage, one shaft revolution (0.04 s)",

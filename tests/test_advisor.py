@@ -73,7 +73,7 @@ def test_stability_polynomials_are_the_exponential_series():
 
 
 @pytest.mark.parametrize("method, order", [
-    ("exudyn/explicit_euler", 1), ("exudyn/explicit_midpoint", 2), ("exudyn/rk33", 3), ("exudyn/rk44", 4),
+    ("exudyn/explicit_euler", 1), ("exudyn/explicit_midpoint", 2), ("exudyn/rk33", 3), ("exudyn/rk4", 4),
     ("exudyn/ode23", 3), ("exudyn/rk67", 6), ("exudyn/dopri5", 5),
 ])
 def test_exudyn_tableaus_have_the_polynomial_of_their_order(method, order):
@@ -107,7 +107,7 @@ def test_closed_forms_of_the_axis_limits_are_the_published_values():
 
 @pytest.mark.parametrize("method, real, imaginary", [
     ("reference/rk4", RK4_REAL, 2 * math.sqrt(2)),
-    ("exudyn/rk44", RK4_REAL, 2 * math.sqrt(2)),
+    ("exudyn/rk4", RK4_REAL, 2 * math.sqrt(2)),
     ("reference/dopri5", DOPRI5_REAL, None),
     ("reference/central_difference", 2.0, 2.0),
     ("reference/velocity_verlet", 1.0, 2.0),
@@ -221,7 +221,7 @@ def test_seed_bearing_advice_is_friction_limited():
     limit, mode = advice.limit_and_mode("reference", "rk4")
     assert mode.startswith("friction, loaded roller")
     assert 1e-7 < limit < 3e-7  # measured: RK4 passes at 1.74e-7 s and fails at 2.46e-7 s (docs/numerics.md)
-    assert advice.limit("exudyn", "rk44") == pytest.approx(limit, rel=1e-12)  # the same tableau
+    assert advice.limit("exudyn", "rk4") == pytest.approx(limit, rel=1e-12)  # the same tableau
     assert advice.limit("exudyn", "generalized_alpha") == math.inf
     assert advice.limit("exudyn", "velocity_verlet") is None
     assert advice.recommended("reference", "rk4") <= 0.5 * limit

@@ -34,7 +34,7 @@ TOO_LARGE = ["scenario.end_time=0.1", "contact.wall.stiffness=6e4"]
     "overrides",
     [
         ["solver.reference.method=rk4", "solver.reference.step=2e-3"],
-        ["solver.engine=exudyn", "solver.exudyn.method=rk44", "solver.exudyn.step=2e-3"],
+        ["solver.engine=exudyn", "solver.exudyn.method=rk4", "solver.exudyn.step=2e-3"],
     ],
 )
 def test_penetration_guard_names_time_pair_and_fix(overrides):

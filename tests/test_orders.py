@@ -32,7 +32,7 @@ END_TIME = 0.05
         ("reference", "velocity_verlet", 0.01),
         ("reference", "rk4", 0.01),
         ("reference", "dopri5", 0.01),
-        ("exudyn", "rk44", 0.01),
+        ("exudyn", "rk4", 0.01),
         ("exudyn", "generalized_alpha", 0.01),
         ("exudyn", "dopri5", 0.01),
     ],
@@ -75,7 +75,7 @@ def observed_order(steps, errors):
         ("reference", "central_difference", 1, 2e-5, 5e-7),
         ("reference", "velocity_verlet", 2, 2e-5, 1e-9),
         ("reference", "rk4", 4, 8e-5, 1e-12),
-        ("exudyn", "rk44", 4, 8e-5, 1e-12),
+        ("exudyn", "rk4", 4, 8e-5, 1e-12),
         ("exudyn", "generalized_alpha", 2, 2e-5, 1e-9),
     ],
 )

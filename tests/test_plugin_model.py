@@ -73,7 +73,7 @@ method = "rk4"
 step = 1e-4
 
 [solver.exudyn]
-method = "rk44"
+method = "rk4"
 step = 1e-4
 
 [disc]

@@ -98,10 +98,10 @@ def test_fixed_coordinate_must_start_at_rest():
 def test_explicit_exudyn_solver_with_a_joint_is_rejected_before_running():
     from bearing_mbs.engines.exudyn.engine import check_supported
 
-    spec = load_spec(SCENARIOS / "seed_case5.toml", ["solver.exudyn.method=rk44"])
+    spec = load_spec(SCENARIOS / "seed_case5.toml", ["solver.exudyn.method=rk4"])
     with pytest.raises(SpecError) as info:
         check_supported(build_scene(spec), spec.solver)
-    assert info.value.field == "solver.exudyn.method" and info.value.value == "rk44"
+    assert info.value.field == "solver.exudyn.method" and info.value.value == "rk4"
     assert "generalized_alpha" in info.value.allowed  # an implicit method that accepts joints
 
 
@@ -139,3 +139,10 @@ def test_cli_rejects_bad_input_with_exit_status_2_and_writes_nothing(tmp_path, c
 def test_a_bearing_spec_round_trips_through_its_mapping():
     spec = load_spec(SCENARIOS / "seed_hss_steady.toml")
     assert spec_from_mapping(json.loads(json.dumps(to_mapping(spec)))) == spec
+
+
+def test_an_old_method_name_is_accepted_with_a_warning():
+    """Exudyn's classic Runge–Kutta is ``rk4``, as on the reference engine; ``rk44`` still loads, and warns."""
+    with pytest.warns(FutureWarning, match="rk4"):
+        spec = load_spec(SCENARIOS / "seed_hss_steady.toml", ["solver.exudyn.method=rk44"])
+    assert spec.solver.exudyn.method == "rk4"

@@ -57,7 +57,7 @@ def converged():
     return run("reference", "rk4", 1.25e-7)
 
 
-@pytest.mark.parametrize("engine, method", [("reference", "rk4"), ("exudyn", "rk44")])
+@pytest.mark.parametrize("engine, method", [("reference", "rk4"), ("exudyn", "rk4")])
 def test_rk4_above_the_advice_skids_spuriously_and_is_caught(converged, engine, method):
     spec, scene, wrong = run(engine, method, 1e-6)
     assert 1e-6 > 5 * ADVISED_RK4

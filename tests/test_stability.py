@@ -92,7 +92,7 @@ def check_suite(directory, summary, cases, solvers):
     assert json.loads((directory / "summary.json").read_text())["cells"] == len(cases) * len(solvers)
     assert summary["explicit_cells_measured"] >= 0.9 * sum(1 for _, method in solvers
                                                           if method in ("central_difference", "velocity_verlet",
-                                                                        "rk4", "rk44")) * len(cases)
+                                                                        "rk4", "rk4")) * len(cases)
     assert summary["fraction_within_factor_2"] >= 0.9, summary["outside_factor_2"]
 
 

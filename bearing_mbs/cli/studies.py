@@ -50,7 +50,7 @@ def _add_stability(commands) -> None:
     add_output(stability, "output directory; re-running skips finished cells", resumes=True)
     stability.add_argument("--reduced", action="store_true", help="the reduced suite of the default tests")
     stability.add_argument("--cases", help="comma-separated case names (default: all; see docs/numerics.md)")
-    stability.add_argument("--solvers", help="comma-separated engine/method pairs, e.g. reference/rk4,exudyn/rk44")
+    stability.add_argument("--solvers", help="comma-separated engine/method pairs, e.g. reference/rk4,exudyn/rk4")
     add_overrides(stability, "override any spec field of the base scenario (repeatable)")
     stability.add_argument("--no-figures", action="store_true", help="skip the heat map")
 

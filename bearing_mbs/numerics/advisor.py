@@ -27,7 +27,7 @@ SAFETY = 0.5
 #: The "engine/method" keys the advice lists.
 ADVISED_METHODS = (
     "reference/central_difference", "reference/velocity_verlet", "reference/rk4", "reference/dopri5",
-    "exudyn/rk44", "exudyn/rk33", "exudyn/rk67", "exudyn/ode23", "exudyn/dopri5", "exudyn/explicit_midpoint",
+    "exudyn/rk4", "exudyn/rk33", "exudyn/rk67", "exudyn/ode23", "exudyn/dopri5", "exudyn/explicit_midpoint",
     "exudyn/explicit_euler", "exudyn/velocity_verlet", "exudyn/dverk6", "exudyn/generalized_alpha",
     "exudyn/trapezoidal_index2",
 )

@@ -3,6 +3,7 @@ scenario can be switched with ``--engine`` without editing it."""
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 from bearing_mbs.spec.fields import SpecError, in_range, one_of, positive
@@ -19,13 +20,15 @@ EXUDYN_METHODS = {
     "explicit_euler": "ExplicitEuler",
     "explicit_midpoint": "ExplicitMidpoint",
     "rk33": "RK33",
-    "rk44": "RK44",
+    "rk4": "RK44",
     "rk67": "RK67",
     "velocity_verlet": "VelocityVerlet",
     "ode23": "ODE23",
     "dopri5": "DOPRI5",
     "dverk6": "DVERK6",
 }
+#: Names a method had before it got the name both engines use: old → new (accepted, with a warning).
+RENAMED_METHODS = {"rk44": "rk4"}
 EXUDYN_IMPLICIT = ("generalized_alpha", "trapezoidal_index2")
 EXUDYN_ADAPTIVE = ("ode23", "dopri5", "dverk6")
 CONNECTORS = ("compiled", "python", "native")
@@ -65,7 +68,8 @@ class ReferenceSolver:
 class ExudynSolver:
     """``[solver.exudyn]``.
 
-    method: one of :data:`EXUDYN_METHODS`. step [s] > 0: the fixed step of explicit methods, the largest step
+    method: one of :data:`EXUDYN_METHODS` (a method both engines have carries one name: ``rk4``; the old
+    ``rk44`` is accepted with a warning). step [s] > 0: the fixed step of explicit methods, the largest step
     of the adaptive explicit methods, and the nominal step of implicit methods (which halve it where Newton's
     method fails, e.g. at a stick–slip transition, and recover). tolerance: relative and absolute tolerance of adaptive methods and the
     Newton tolerance of implicit ones. connector: how contact forces reach Exudyn: ``compiled`` (the numba
@@ -80,6 +84,12 @@ class ExudynSolver:
     spectral_radius: float = 0.9
 
     def __post_init__(self):
+        if self.method in RENAMED_METHODS:
+            renamed = RENAMED_METHODS[self.method]
+            warnings.warn(f"solver.exudyn.method = {self.method!r} is now called {renamed!r} (the name both engines "
+                          f"use for the same method); the old name will be refused in a later version",
+                          FutureWarning, stacklevel=2)
+            object.__setattr__(self, "method", renamed)
         one_of("method", self.method, tuple(EXUDYN_METHODS))
         positive("step", self.step)
         in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
