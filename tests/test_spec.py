@@ -146,3 +146,26 @@ def test_an_old_method_name_is_accepted_with_a_warning():
     with pytest.warns(FutureWarning, match="rk4"):
         spec = load_spec(SCENARIOS / "seed_hss_steady.toml", ["solver.exudyn.method=rk44"])
     assert spec.solver.exudyn.method == "rk4"
+
+
+def test_an_analysis_start_past_a_shortened_run_moves_to_half_of_it(caplog):
+    """One override shortens a run: the scenario's 0.05 s window start is past a 0.01 s end, so the window starts
+    at 0.005 s, and the log says so."""
+    with caplog.at_level("WARNING"):
+        spec = load_spec(SCENARIOS / "seed_hss_steady.toml", ["scenario.end_time=0.01"])
+    assert spec.analysis.window_start(spec.scenario.end_time) == pytest.approx(0.005)
+    assert any("analysis.start" in record.getMessage() for record in caplog.records)
+
+
+def test_the_analysis_window_as_a_fraction_of_the_run():
+    spec = spec_from_mapping(_steady_with_fraction(0.25))
+    assert spec.analysis.window_start(spec.scenario.end_time) == pytest.approx(0.25 * spec.scenario.end_time)
+    with pytest.raises(SpecError) as error:
+        spec_from_mapping(_steady_with_fraction(0.25, start=0.05))
+    assert error.value.field == "analysis.start_fraction"
+
+
+def _steady_with_fraction(fraction, start=None):
+    data = tomllib.loads((SCENARIOS / "seed_hss_steady.toml").read_text())
+    data["analysis"] = {"start_fraction": fraction, **({"start": start} if start is not None else {})}
+    return data

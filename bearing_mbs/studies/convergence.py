@@ -62,8 +62,7 @@ def window_mask(spec: Spec, times: np.ndarray) -> np.ndarray:
     study = spec.convergence
     start = study.start
     if start is None:
-        start = (spec.analysis.start if spec.analysis and spec.analysis.start is not None
-                 else spec.scenario.end_time / 2) if spec.scenario.model == "bearing" else 0.0
+        start = spec.analysis.window_start(spec.scenario.end_time) if spec.scenario.model == "bearing" else 0.0
     end = study.end if study.end is not None else np.inf
     return (times >= start - 1e-12) & (times <= end + 1e-12)
 

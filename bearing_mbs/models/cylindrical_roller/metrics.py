@@ -46,7 +46,7 @@ UNITS = {
 
 def window(spec, result) -> np.ndarray:
     """Boolean mask of the output instants in the analysis window."""
-    start = spec.analysis.start if spec.analysis.start is not None else spec.scenario.end_time / 2
+    start = spec.analysis.window_start(spec.scenario.end_time)
     mask = result.time >= start - 1e-12
     return mask if mask.any() else np.ones_like(result.time, dtype=bool)
 

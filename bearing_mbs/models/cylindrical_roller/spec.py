@@ -7,13 +7,16 @@ where the key says so.
 
 from __future__ import annotations
 
+import logging
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from bearing_mbs.contact.line_contact import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
 from bearing_mbs.spec import ContactSpec, Spec
 from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, one_of, positive, require
 from bearing_mbs.spec.loading import to_mapping
+
+log = logging.getLogger(__name__)
 
 CAGE_MODELS = ("penalty", "constraint", "none")
 CAGE_GUIDANCE = ("rollers", "inner_land", "outer_land")
@@ -337,17 +340,31 @@ class LubricantSpec:
 
 @dataclass(frozen=True)
 class AnalysisSpec:
-    """``[analysis]``: start [s] of the window over which means are taken (default: the second half of
-    the run); load_fraction: contacts carrying less than this fraction of the largest roller load are
-    left out of slip ratios (their rolling speed is not defined by the load)."""
+    """``[analysis]``: the window over which means are taken starts at ``start`` [s], or at ``start_fraction``
+    in [0, 1) of the end time (give one; default: the second half of the run, fraction 0.5). A ``start`` at or
+    after the end time is moved to half the end time, with a logged notice (a run shortened by
+    ``--set scenario.end_time=…`` needs no second override). load_fraction: contacts carrying less than this
+    fraction of the largest roller load are left out of slip ratios (their rolling speed is not defined by the
+    load)."""
 
     start: float | None = None
+    start_fraction: float | None = None
     load_fraction: float = 0.05
 
     def __post_init__(self):
         if self.start is not None:
             non_negative("start", self.start)
+            require(self.start_fraction is None, "start_fraction", self.start_fraction,
+                    f"give start [s] or start_fraction, not both (start = {self.start!r})")
+        if self.start_fraction is not None:
+            in_range("start_fraction", self.start_fraction, 0.0, 1.0, high_open=True)
         in_range("load_fraction", self.load_fraction, 0.0, 1.0)
+
+    def window_start(self, end_time: float) -> float:
+        """Where the window starts [s] in a run that ends at ``end_time`` [s]."""
+        if self.start is not None:
+            return self.start
+        return (0.5 if self.start_fraction is None else self.start_fraction) * end_time
 
 
 #: Presets: documented coherent bearings (see docs/bearing.md for the sources and choices).
@@ -412,9 +429,11 @@ class BearingModelSpec(Spec):
 
     def __post_init__(self):
         require(self.bearing is not None, "bearing", None, "the bearing model needs a [bearing] section")
-        if self.analysis.start is not None:
-            require(self.analysis.start < self.scenario.end_time, "analysis.start", self.analysis.start,
-                    "must be before scenario.end_time")
+        start, end = self.analysis.start, self.scenario.end_time
+        if start is not None and not start < end:
+            log.warning("analysis.start = %g s is not before scenario.end_time = %g s: the window starts at half the "
+                        "end time, %g s, instead (analysis.start_fraction scales with the run)", start, end, end / 2)
+            object.__setattr__(self, "analysis", replace(self.analysis, start=None))
 
 
 def with_preset(data: dict) -> dict:
