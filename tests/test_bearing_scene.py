@@ -132,7 +132,7 @@ VALID = object()  # marks an override that is accepted
         ("contact.pocket.stiffness_model=document", "contact.pocket.stiffness_model", "document"),
         ("contact.wall.stiffness=1e6", "contact.wall", {"stiffness": 1e6}),
         ("balls.0.mass=1", "balls", {"0": {"mass": 1}}),
-        ("analysis.start=0.2", "analysis.start", 0.2),
+        ("analysis.start_fraction=1.0", "analysis.start_fraction", 1.0),
     ],
 )
 def test_bearing_bad_input_names_the_field(override, field, value):

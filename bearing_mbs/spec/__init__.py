@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from bearing_mbs.spec.contact import ContactSpec
 from bearing_mbs.spec.convergence import ConvergenceSpec, RunSettings
-from bearing_mbs.spec.fields import SpecError, non_negative, positive
+from bearing_mbs.spec.fields import SpecError, non_negative, positive, require
 from bearing_mbs.spec.loading import apply_override, from_mapping, parse_override, read_toml, to_mapping
 from bearing_mbs.spec.solver import ExudynSolver, ReferenceSolver, SolverSpec
 
@@ -42,6 +42,17 @@ class Spec:
     scenario: Scenario
     solver: SolverSpec = field(default_factory=SolverSpec)
     convergence: ConvergenceSpec | None = None
+
+    def __post_init__(self):
+        """What ties the shared sections together (a model's subclass calls this first)."""
+        end, solver = self.scenario.end_time, self.solver
+        require(solver.output_interval <= end, "solver.output_interval", solver.output_interval,
+                f"<= scenario.end_time = {end:g} s (else the run has no output instant but the first and last)")
+        step = solver.active.step
+        require(step <= end, f"solver.{solver.engine}.step", step, f"<= scenario.end_time = {end:g} s")
+        if solver.engine == "exudyn":
+            require(step <= solver.output_interval, "solver.exudyn.step", step,
+                    f"<= solver.output_interval = {solver.output_interval:g} s (Exudyn records output at its steps)")
 
 
 __all__ = [

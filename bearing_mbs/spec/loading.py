@@ -155,10 +155,14 @@ def apply_override(data: dict, keys: list[str], value) -> None:
 
 def read_toml(path: str | Path) -> dict:
     path = Path(path)
+    if path.is_dir():
+        raise SpecError("scenario file", str(path), "a TOML file; this is a directory")
     try:
         with path.open("rb") as handle:
             return tomllib.load(handle)
     except FileNotFoundError:
         raise SpecError("scenario file", str(path), "file not found") from None
+    except OSError as error:
+        raise SpecError("scenario file", str(path), f"a readable file ({error.strerror})") from None
     except tomllib.TOMLDecodeError as error:
         raise SpecError("scenario file", str(path), f"is not valid TOML: {error}") from None

@@ -50,7 +50,6 @@ from bearing_mbs.engines.exudyn.connectors import (
 from bearing_mbs.spec.fields import SpecError
 from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
 
-
 #: The share of a body's rotational inertia it keeps when an orbit constraint gives it a carrier (the carrier
 #: takes the rest).
 CARRIER_SHARE = 0.5

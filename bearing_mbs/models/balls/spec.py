@@ -113,6 +113,7 @@ class BallsModelSpec(Spec):
     constraints: tuple[ConstraintSpec, ...] = ()
 
     def __post_init__(self):
+        super().__post_init__()
         require(len(self.balls) > 0, "balls", [], "the balls model needs at least one [[balls]] entry")
         for i, constraint in enumerate(self.constraints):
             for j, body in enumerate(constraint.bodies):

@@ -34,6 +34,7 @@ from bearing_mbs.models.cylindrical_roller.spec import (
     outer_race_diameter,
     pocket_angle_cosine,
 )
+from bearing_mbs.spec.fields import require
 
 
 @dataclass(frozen=True)
@@ -70,6 +71,10 @@ class BearingGeometry:
         # the cage: an annulus of thickness t and width w around D_c, less Z pocket windows (D_w + 2H) × L_w
         cage_volume = math.pi * d_c * t * spec.cage_width - z * (d_w + 2 * h) * length * t
         cage_mass = spec.cage_material.density * cage_volume
+        windows = z * (d_w + 2 * h) * length * t
+        require(cage_volume > 0, "bearing.cage_width", spec.cage_width,
+                f"> {windows / (math.pi * d_c * t):.4g} m: the {z} pocket windows (D_w + 2H) × L_w take more than the "
+                f"cage ring of width cage_width, so its mass would be {cage_mass:.3g} kg")
         r_out, r_in = (d_c + t) / 2, (d_c - t) / 2
         inner_race = inner_race_diameter(pitch, d_w, clearance)
         ring_mass = spec.ring_material.density * math.pi * (inner_race**2 - spec.inner_ring_bore**2) / 4 * spec.ring_width

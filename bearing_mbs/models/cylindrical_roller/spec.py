@@ -23,6 +23,15 @@ CAGE_GUIDANCE = ("rollers", "inner_land", "outer_land")
 SPEED_PROFILES = ("constant", "ramp", "table")
 DRIVE_KINDS = ("speed", "gear_train")
 LOAD_PROFILES = ("constant", "step", "ramp", "table")
+#: Largest pitch-circle speed π D_pw n/60 [m/s] a scenario may ask for: n·d_m ≈ 3.8e6 mm rpm, beyond the fastest
+#: rolling bearings (the seed bearing at 1500 rpm: 18 m/s; the stability suite's 10 000 rpm case: 123 m/s).
+PITCH_SPEED_LIMIT = 200.0
+#: Largest radial load, in multiples of the ISO 76 static load rating C0 (at C0 the contact stress of a roller
+#: bearing is 4000 MPa; at 4 C0 about 8000 MPa, far into yield).
+LOAD_LIMIT = 4.0
+#: Largest mass the inner ring may carry [kg] (a wind-turbine HSS shaft puts tens of kg on this bearing, a main
+#: shaft tens of tonnes).
+SUPPORTED_MASS_LIMIT = 1e5
 #: Largest diametral clearance: P_d <= CLEARANCE_LIMIT · D_w [-].
 CLEARANCE_LIMIT = 5e-2
 #: Largest preload: −P_d <= PRELOAD_LIMIT · D_w [-]; it keeps the per-contact approach below 1e-3 D_w, beyond the
@@ -91,7 +100,7 @@ class BearingSpec:
         for name in ("roller_diameter", "roller_length", "cage_diameter", "pocket_clearance", "cage_thickness",
                      "cage_width", "inner_ring_bore", "ring_width"):
             positive(name, getattr(self, name))
-        non_negative("supported_mass", self.supported_mass)
+        in_range("supported_mass", self.supported_mass, 0.0, SUPPORTED_MASS_LIMIT)
         by_pitch = (self.pitch_diameter, self.diametral_clearance)
         by_races = (self.inner_race_diameter, self.outer_race_diameter)
         if all(v is not None for v in by_pitch) == all(v is not None for v in by_races) or (
@@ -110,7 +119,10 @@ class BearingSpec:
         if self.cage_guidance != "rollers":
             require(self.land_clearance is not None, "land_clearance", None,
                     f"is required with cage_guidance = {self.cage_guidance}")
-            positive("land_clearance", self.land_clearance)
+            in_range("land_clearance", self.land_clearance, 0.0, self.roller_diameter, low_open=True, high_open=True)
+        inner = inner_race_diameter(self.pitch, self.roller_diameter, self.clearance)
+        require(self.inner_ring_bore < inner, "inner_ring_bore", self.inner_ring_bore,
+                f"< the inner raceway diameter {inner:.6g} m (the ring needs a wall)")
 
     @property
     def pitch(self) -> float:
@@ -143,6 +155,13 @@ class BearingSpec:
         cosine = pocket_angle_cosine(pitch, self.cage_diameter, d_w, self.pocket_clearance)
         require(-1 < cosine < 1 and 2 * math.acos(cosine) < 2 * math.pi / self.rollers, "pocket_clearance",
                 self.pocket_clearance, "puts the pocket edges of neighbouring rollers past each other")
+
+
+def static_load_rating(bearing: BearingSpec) -> float:
+    """ISO 76 basic static radial load rating of a radial roller bearing, C0 = 44 (1 − D_w/D_pw) Z L_w D_w [N]
+    (contact angle 0, one row; lengths in mm in the standard's formula)."""
+    d_w, length = 1e3 * bearing.roller_diameter, 1e3 * bearing.roller_length
+    return 44.0 * (1.0 - bearing.roller_diameter / bearing.pitch) * bearing.rollers * length * d_w
 
 
 def diametral_clearance(inner_race_diameter: float, outer_race_diameter: float, roller_diameter: float) -> float:
@@ -249,6 +268,11 @@ class DriveSpec:
     servo_time_constant: float = 1e-3
     initial_state: str = "rolling"
     gear_train: GearTrainSpec | None = None
+
+    @property
+    def top_rpm(self) -> float:
+        """The largest |speed| [rpm] the section declares (the gear train's own acceleration aside)."""
+        return max(abs(self.speed_rpm), abs(self.from_rpm), *(abs(v) for v in self.speeds_rpm))
 
     def __post_init__(self):
         one_of("kind", self.kind, DRIVE_KINDS)
@@ -428,7 +452,18 @@ class BearingModelSpec(Spec):
     analysis: AnalysisSpec = field(default_factory=AnalysisSpec)
 
     def __post_init__(self):
+        super().__post_init__()
         require(self.bearing is not None, "bearing", None, "the bearing model needs a [bearing] section")
+        pitch_speed = math.pi * self.bearing.pitch * abs(self.drive.top_rpm) / 60
+        require(pitch_speed <= PITCH_SPEED_LIMIT, "drive.speed_rpm", self.drive.top_rpm,
+                f"a pitch-circle speed π D_pw n/60 <= {PITCH_SPEED_LIMIT:g} m/s (n <= "
+                f"{PITCH_SPEED_LIMIT * 60 / (math.pi * self.bearing.pitch):.4g} rpm for D_pw = {self.bearing.pitch:g} m): "
+                f"beyond the fastest rolling bearings")
+        capacity = static_load_rating(self.bearing)
+        for name, value in (("load.radial", self.load.radial), ("load.final", self.load.final)):
+            require(value <= LOAD_LIMIT * capacity, name, value,
+                    f"<= {LOAD_LIMIT:g} C0 = {LOAD_LIMIT * capacity:.4g} N (ISO 76 static load rating C0 = "
+                    f"{capacity:.4g} N of this bearing): beyond it the raceways yield, which the model does not hold")
         start, end = self.analysis.start, self.scenario.end_time
         if start is not None and not start < end:
             log.warning("analysis.start = %g s is not before scenario.end_time = %g s: the window starts at half the "

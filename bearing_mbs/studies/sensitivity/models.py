@@ -51,6 +51,10 @@ class RunModel:
     def describe(self) -> str:
         return self.name
 
+    def outputs(self) -> tuple[str, ...] | None:
+        """The names of the numbers its summaries carry, for checking a study's outputs (None: not known)."""
+        return None
+
     def assign(self, names: tuple[str, ...], values) -> dict:
         """The canonical input with ``values`` set at the dotted paths ``names`` of the base input."""
         data = copy.deepcopy(self.base())
@@ -85,6 +89,13 @@ class SimulationModel(RunModel):
 
     def canonical(self, data: dict) -> dict:
         return to_mapping(spec_from_mapping(data))
+
+    def outputs(self) -> tuple[str, ...]:
+        """The run's numbers (cost, counts) and the metrics of the scenario's model (their ``units`` keys)."""
+        from bearing_mbs.models import MODELS
+        from bearing_mbs.runner.units import RUN_UNITS
+
+        return (*RUN_UNITS, *MODELS[self._base["scenario"]["model"]].units)
 
     def evaluate(self, data: dict, keep_result: bool = False) -> tuple[dict, dict[str, bytes]]:
         from bearing_mbs.runner import run_spec, summarize
@@ -131,6 +142,9 @@ class IshigamiModel(RunModel):
 
     def base(self) -> dict:
         return {"x1": 0.0, "x2": 0.0, "x3": 0.0, "a": self.a, "b": self.b}
+
+    def outputs(self) -> tuple[str, ...]:
+        return ("y",)
 
     def canonical(self, data: dict) -> dict:
         for key, value in data.items():

@@ -282,12 +282,17 @@ def load_study(path: str | Path, overrides: list[str] = ()) -> Study:
     """Read and validate a study TOML file; ``section.key=value`` overrides apply to the study file
     (e.g. ``method.samples=4``). Raises :class:`SpecError` before anything runs."""
     path = Path(path)
+    if path.is_dir():
+        raise SpecError("study file", str(path), "a TOML file; this is a directory")
     try:
         data = tomllib.loads(path.read_text())
     except FileNotFoundError:
         raise SpecError("study file", str(path), "file not found") from None
     except tomllib.TOMLDecodeError as error:
         raise SpecError("study file", str(path), f"is not valid TOML: {error}") from None
+    if "scenario" in data and "study" not in data:
+        raise SpecError("study file", "[scenario]", "a sensitivity study (with [study]); this is a scenario: run it "
+                                                   "with `bearing-mbs run`")
     for text in overrides:
         keys, value = parse_override(text)
         apply_override(data, keys, value)
@@ -306,6 +311,10 @@ def load_study(path: str | Path, overrides: list[str] = ()) -> Study:
             model = SimulationModel(str(scenario), header.overrides)
         except SpecError as error:
             raise SpecError("study.scenario", header.scenario, f"the base scenario is invalid: {error}") from None
+    known = model.outputs()
+    for i, output in enumerate(header.outputs):
+        require(known is None or output in known, f"study.outputs.{i}", output,
+                f"a number the runs report: one of {', '.join(sorted(known or ()))}")
     return Study(
         name=header.name,
         model=model,
