@@ -29,7 +29,7 @@ def spec_from_mapping(data: dict) -> Spec:
     if not isinstance(scenario, dict):
         raise SpecError("scenario", scenario, "a [scenario] table with name, model and end_time is required")
     model = scenario.get("model")
-    if model not in MODELS:
+    if not isinstance(model, str) or model not in MODELS:
         raise SpecError("scenario.model", model, f"must be one of {', '.join(MODELS)}")
     data = {key: value for key, value in copy.deepcopy(data).items() if value not in ([], {})}
     return from_mapping(MODELS[model].spec, MODELS[model].prepare(data))

@@ -476,7 +476,7 @@ def with_preset(data: dict) -> dict:
     bearing = data.get("bearing")
     if isinstance(bearing, dict) and bearing.get("preset"):
         name = bearing["preset"]
-        if name not in PRESETS:
+        if not isinstance(name, str) or name not in PRESETS:
             raise SpecError("bearing.preset", name, f"must be one of {', '.join(PRESETS)}")
         given = set(bearing)
         if given & {"pitch_diameter", "diametral_clearance"}:  # the user chose the other raceway description
