@@ -79,3 +79,18 @@ def test_implicit_solver_failure_on_the_dead_zone_explains_itself():
     assert [pair.law.friction_law for pair in build_scene(spec).pairs] == ["dead_zone"]  # the one pair's law
     # names the law at fault and the smooth one to use instead
     assert names_time_and(result.message, result.time[-1], "dead_zone", "erf"), result.message
+
+
+@pytest.mark.parametrize("engine, method, switch", [("exudyn", "generalized_alpha", False),
+                                                    ("exudyn", "rk4", True), ("reference", "rk4", True)])
+def test_a_divergence_fix_fits_what_the_run_already_uses(engine, method, switch):
+    """The likely fix names a value (a quarter of the step the run used), and offers the implicit solver only to
+    a run that is not already implicit (the trust issue: a 1e12 N load on generalized-alpha was told to use
+    generalized-alpha)."""
+    from bearing_mbs.engines.diagnosis import divergence_fix
+    from bearing_mbs.spec.solver import ExudynSolver, ReferenceSolver, SolverSpec
+
+    settings = {engine: (ExudynSolver if engine == "exudyn" else ReferenceSolver)(method=method, step=1e-5)}
+    fix = divergence_fix(SolverSpec(engine=engine, **settings))
+    assert "2.5e-06 s" in fix
+    assert ("generalized_alpha" in fix) == switch
