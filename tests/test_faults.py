@@ -110,8 +110,8 @@ def test_an_existing_result_is_kept(tmp_path):
     assert main(["run", STEADY, "--out", str(out), "--quiet", "--no-figures", *SHORT]) == 2
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
 
-    # a run that fails (a speed limit below the ring's speed) never replaces the good result
-    failing = [*SHORT, "--set", "solver.speed_limit=1e-6"]
+    # a run that fails (RK4 at 1e-4 s, 500 times its stability limit, diverges) never replaces the good result
+    failing = [*SHORT, "--engine", "reference", "--set", "solver.reference.step=1e-4"]
     assert main(["run", STEADY, "--out", str(out), "--quiet", "--no-figures", "--overwrite", *failing]) == 1
     assert {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()} == before
     assert _summary(out / "rejected")["status"] == FAILED

@@ -55,6 +55,8 @@ INNER_RING, CAGE = 0, 1
 def build_bearing_scene(spec: Spec) -> Scene:
     geometry = BearingGeometry.from_spec(spec.bearing)
     caged = spec.cage.model != "none"
+    if caged:
+        geometry.require_cage(spec.bearing)
     first_roller = 2 if caged else 1
     drive = spec.drive
     train = GearTrain(drive.gear_train) if drive.kind == "gear_train" else None

@@ -34,7 +34,7 @@ from bearing_mbs.models.cylindrical_roller.spec import (
     outer_race_diameter,
     pocket_angle_cosine,
 )
-from bearing_mbs.spec.fields import require
+from bearing_mbs.spec import SpecError
 
 
 @dataclass(frozen=True)
@@ -62,6 +62,15 @@ class BearingGeometry:
     cage_outer_radius: float
     outer_land_radius: float  # on the outer ring, for an outer-land-guided cage [m]
 
+    def require_cage(self, spec: BearingSpec) -> None:
+        """Refuse a cage whose pocket windows leave it no mass (before anything runs)."""
+        if self.cage_mass <= 0:
+            windows = self.rollers * (self.roller_diameter + 2 * spec.pocket_clearance) * self.roller_length
+            raise SpecError("bearing.cage_width", spec.cage_width,
+                            f"> {windows / (math.pi * spec.cage_diameter):.4g} m: the {self.rollers} pocket windows "
+                            f"(D_w + 2H) × L_w take more than the cage ring, so its mass would be "
+                            f"{self.cage_mass:.3g} kg")
+
     @classmethod
     def from_spec(cls, spec: BearingSpec) -> BearingGeometry:
         z, d_w, length = spec.rollers, spec.roller_diameter, spec.roller_length
@@ -71,10 +80,6 @@ class BearingGeometry:
         # the cage: an annulus of thickness t and width w around D_c, less Z pocket windows (D_w + 2H) × L_w
         cage_volume = math.pi * d_c * t * spec.cage_width - z * (d_w + 2 * h) * length * t
         cage_mass = spec.cage_material.density * cage_volume
-        windows = z * (d_w + 2 * h) * length * t
-        require(cage_volume > 0, "bearing.cage_width", spec.cage_width,
-                f"> {windows / (math.pi * d_c * t):.4g} m: the {z} pocket windows (D_w + 2H) × L_w take more than the "
-                f"cage ring of width cage_width, so its mass would be {cage_mass:.3g} kg")
         r_out, r_in = (d_c + t) / 2, (d_c - t) / 2
         inner_race = inner_race_diameter(pitch, d_w, clearance)
         ring_mass = spec.ring_material.density * math.pi * (inner_race**2 - spec.inner_ring_bore**2) / 4 * spec.ring_width
