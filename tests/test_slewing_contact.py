@@ -8,7 +8,7 @@ References:
   Q = 95 191 N and a = 8.298 mm (as printed, to the printed digits), b = 1.304 mm (the thesis prints 1.1304; 1.304
   is what its own formula gives, and what 1.5 Q/(π a b) = 4200 MPa needs);
 * the exact Hertz solution: for two equal spheres it is the closed form a = (3QR/(4E*))^{1/3} with R = R₁/2 and
-  E* = E/(2(1 − ν²)) (Johnson, Contact Mechanics, 1985, eq. 4.22), to 1e-9; for the ball in a straight groove,
+  E* = E/(2(1 − ν²)) and the approach δ = a²/R (Johnson, Contact Mechanics, 1985, eqs. 4.22–4.23), to 1e-9; for the ball in a straight groove,
   the case Houpert's fits describe, Houpert and Hertz agree to 0.5 % on a, b and p_max (measured: +0.40 %,
   −0.04 %, −0.36 %; Houpert's paper states the accuracy of its fits, which this test does not quote);
 * the raceway's curvature in the rolling direction at D_pw = 1.5 m, α = 45° moves a and b by under 1.5 %.
@@ -23,6 +23,7 @@ import pytest
 from bearing_mbs.contact.point_contact import (
     ball_groove_curvatures,
     effective_modulus,
+    hertz_approach,
     hertz_contact,
     houpert_contact,
     houpert_load_at_pressure,
@@ -63,6 +64,8 @@ def test_exact_hertz_for_two_spheres_is_the_closed_form():
     closed = (3 * load * (radius / 2) / (4 * star)) ** (1 / 3)
     assert contact.a == pytest.approx(closed, rel=1e-9) and contact.b == pytest.approx(closed, rel=1e-9)
     assert contact.p_max == pytest.approx(3 * load / (2 * math.pi * closed**2), rel=1e-9)
+    approach = hertz_approach(load, (sphere, sphere, sphere, sphere), effective_modulus(E, NU, E, NU))
+    assert approach == pytest.approx(closed**2 / (radius / 2), rel=1e-9)  # δ = a²/R (Johnson eq. 4.23)
 
 
 def test_houpert_agrees_with_exact_hertz_in_a_straight_groove():

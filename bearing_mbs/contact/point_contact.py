@@ -80,6 +80,22 @@ def hertz_contact(load: float, curvatures: tuple[float, float, float, float], mo
     return EllipticalContact(a, b, 3 * load / (2 * math.pi * a * b))
 
 
+def hertz_approach(load: float, curvatures: tuple[float, float, float, float], modulus: float) -> float:
+    """The approach δ [m] of the two bodies' far points under ``load`` [N] (Harris & Kotzalas, ch. 6):
+    δ = δ* [3Q/(2Σρ) · 2/E']^{2/3} Σρ/2 with δ* = (2𝒦/π) (π/(2κ²ℰ))^{1/3}."""
+    total = sum(curvatures)
+    r1i, r1ii, r2i, r2ii = curvatures
+    kappa = ellipse_ratio(abs((r1i - r1ii) + (r2i - r2ii)) / total)
+    m = 1.0 - 1.0 / kappa**2
+    star = 2 * ellipk(m) / math.pi * (math.pi / (2 * kappa**2 * ellipe(m))) ** (1 / 3)
+    return star * (3 * load / (2 * total) * 2 / modulus) ** (2 / 3) * total / 2
+
+
+def hertz_stiffness(curvatures: tuple[float, float, float, float], modulus: float) -> float:
+    """K [N/m^1.5] of Q = K δ^{3/2} for the contact (:func:`hertz_approach`; K does not depend on the load)."""
+    return 1.0 / hertz_approach(1.0, curvatures, modulus) ** 1.5
+
+
 def ball_groove_curvatures(ball_diameter: float, conformity: float, pitch_diameter: float | None = None,
                            contact_angle: float = 0.0, ring: str = "inner") -> tuple[float, float, float, float]:
     """(ρ₁I, ρ₁II, ρ₂I, ρ₂II) [1/m] of a ball (body 1) in the groove of a ring (body 2): the groove radius

@@ -1,0 +1,181 @@
+r"""Quasi-static load distribution of a four-point-contact slewing bearing with rigid rings.
+
+Model (the analytical model document 002 builds on: each ball as two tension-only springs on the diagonals
+between the raceway curvature centres; J. Aguirrebeitia, R. Avilés, I. Fernández de Bustos, M. Abasolo, "Calculation
+of general static load-carrying capacity for the design of four-contact-point slewing bearings", J. Mech. Des. 132
+(2010) 064501). Ball j sits at azimuth ψ_j = 2πj/N on the pitch circle of radius R = D_pw/2. In the section at
+ψ_j, in (radial, axial) coordinates, diagonal d = ±1 joins the two curvature centres across the ball; unloaded
+they are A₀ = 2R_c − D_w apart along e_d = (cos α₀, d sin α₀). The inner ring moves by x = (δ_r, δ_a, θ): a radial
+shift along the x axis (ψ = 0) [m], an axial shift [m] and a tilt about the y axis [rad] (the outer ring is held).
+At ball j the centres then sit at
+
+.. math:: s_d = A_0 e_d + (\delta_r\cos\psi_j,\ \delta_a + \theta R\cos\psi_j),
+
+and the diagonal carries Q = K (|s_d| − A₀)^{3/2} when the centres have moved apart (|s_d| > A₀), nothing
+otherwise, along s_d at the contact angle α = atan2(|s_z|, s_r). K is the two Hertz contacts of the diagonal in
+series (:func:`diagonal_stiffness`). The bearing carries the load
+(F_r, F_a, M) = Σ_j Σ_d Bᵀ Q ŝ_d with B = [[cos ψ, 0, 0], [0, 1, R cos ψ]] (rows s_r, s_z), and its stiffness is
+the Jacobian of that sum, written analytically (∂f/∂s = Q′ ŝŝᵀ + (Q/|s|)(I − ŝŝᵀ)).
+
+:func:`solve` finds x for a load by Newton's method with a backtracking line search (the same style as the radial
+roller solver of document 003), with any of the three coordinates imposed instead (an imposed axial displacement
+gives a load–deflection curve).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_stiffness
+from bearing_mbs.models.slewing_bearing.geometry import ball_count
+from bearing_mbs.spec import SpecError
+
+#: Coordinates of the inner ring: radial shift [m], axial shift [m], tilt [rad].
+COORDINATES = ("radial", "axial", "tilt")
+
+
+def diagonal_stiffness(ball_diameter: float, conformity: float, pitch_diameter: float, contact_angle: float,
+                       youngs_modulus: float, poisson_ratio: float) -> float:
+    """K [N/m^1.5] of one diagonal: the ball's inner-ring and outer-ring Hertz contacts in series,
+    (K_i^{-2/3} + K_o^{-2/3})^{-3/2}, each from the exact solution with the raceway's curvature."""
+    modulus = effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus, poisson_ratio)
+    k_inner, k_outer = (hertz_stiffness(ball_groove_curvatures(ball_diameter, conformity, pitch_diameter,
+                                                               contact_angle, ring), modulus)
+                        for ring in ("inner", "outer"))
+    return (k_inner ** (-2 / 3) + k_outer ** (-2 / 3)) ** -1.5
+
+
+@dataclass(frozen=True)
+class SlewingBearing:
+    """A four-point-contact ball bearing with rigid rings.
+
+    pitch_diameter D_pw [m]; ball_diameter D_w [m]; conformity s = D_w/(2 R_c) in (0.5, 1); contact_angle α₀
+    [rad] in (0, π/2); balls N (default trunc(π D_pw/D_w)); stiffness K [N/m^1.5] of a diagonal (default: Hertz,
+    steel E = 200 GPa, ν = 0.3).
+    """
+
+    pitch_diameter: float
+    ball_diameter: float
+    conformity: float
+    contact_angle: float
+    balls: int | None = None
+    stiffness: float | None = None
+
+    def __post_init__(self):
+        if not self.pitch_diameter > 0:
+            raise SpecError("pitch_diameter", self.pitch_diameter, "> 0 [m]")
+        if not 0 < self.ball_diameter:
+            raise SpecError("ball_diameter", self.ball_diameter, "> 0 [m]")
+        if not 0.5 < self.conformity < 1:
+            raise SpecError("conformity", self.conformity, "in (0.5, 1): the groove radius between D_w/2 and D_w")
+        if not 0 < self.contact_angle < math.pi / 2:
+            raise SpecError("contact_angle", math.degrees(self.contact_angle), "in (0, 90) degrees")
+        fit = ball_count(self.pitch_diameter, self.ball_diameter)
+        if self.balls is None:
+            object.__setattr__(self, "balls", fit)
+        if not 1 <= self.balls <= fit:
+            raise SpecError("balls", self.balls, f"in [1, {fit}]: that many balls of {self.ball_diameter:g} m fit "
+                                                 f"side by side on a pitch circle of {self.pitch_diameter:g} m")
+        if self.stiffness is None:
+            object.__setattr__(self, "stiffness", diagonal_stiffness(self.ball_diameter, self.conformity,
+                                                                     self.pitch_diameter, self.contact_angle,
+                                                                     200e9, 0.3))
+
+    @property
+    def centre_distance(self) -> float:
+        """A₀ = 2R_c − D_w [m], the distance of the curvature centres across an unloaded ball."""
+        return self.ball_diameter / self.conformity - self.ball_diameter
+
+    @property
+    def azimuths(self) -> np.ndarray:
+        return 2 * math.pi * np.arange(self.balls) / self.balls
+
+
+@dataclass(frozen=True)
+class Distribution:
+    """The state at inner-ring displacement x = (δ_r [m], δ_a [m], θ [rad]): ``load`` (F_r [N], F_a [N], M [N m])
+    and its ``stiffness`` ∂load/∂x (3×3, SI); per ball and diagonal (N, 2): ``ball_loads`` Q [N] and
+    ``contact_angles`` α [rad]; ``azimuths`` ψ [rad]."""
+
+    displacement: np.ndarray
+    load: np.ndarray
+    stiffness: np.ndarray
+    ball_loads: np.ndarray
+    contact_angles: np.ndarray
+    azimuths: np.ndarray
+
+
+def evaluate(bearing: SlewingBearing, displacement) -> Distribution:
+    """Ball loads, the bearing's load and its analytic stiffness at the inner-ring ``displacement``."""
+    radial, axial, tilt = (float(v) for v in displacement)
+    a0, k, alpha0 = bearing.centre_distance, bearing.stiffness, bearing.contact_angle
+    psi = bearing.azimuths
+    cos_psi = np.cos(psi)
+    radius = bearing.pitch_diameter / 2
+    load, stiffness = np.zeros(3), np.zeros((3, 3))
+    ball_loads, angles = np.zeros((psi.size, 2)), np.zeros((psi.size, 2))
+    for column, d in enumerate((1.0, -1.0)):
+        s_r = a0 * math.cos(alpha0) + radial * cos_psi
+        s_z = d * a0 * math.sin(alpha0) + axial + tilt * radius * cos_psi
+        length = np.hypot(s_r, s_z)
+        approach = np.maximum(length - a0, 0.0)
+        q = k * approach**1.5
+        dq = 1.5 * k * np.sqrt(approach)
+        unit_r, unit_z = s_r / length, s_z / length
+        ball_loads[:, column] = q
+        angles[:, column] = np.arctan2(np.abs(s_z), s_r)
+        f_r, f_z = q * unit_r, q * unit_z
+        load += [np.sum(f_r * cos_psi), np.sum(f_z), np.sum(radius * cos_psi * f_z)]
+        # ∂f/∂s = Q' ŝŝᵀ + (Q/|s|)(I − ŝŝᵀ), then Bᵀ (∂f/∂s) B
+        tangent = q / length
+        d_rr = dq * unit_r**2 + tangent * (1 - unit_r**2)
+        d_rz = (dq - tangent) * unit_r * unit_z
+        d_zz = dq * unit_z**2 + tangent * (1 - unit_z**2)
+        b_r = np.stack([cos_psi, np.zeros_like(psi), np.zeros_like(psi)])  # ∂s_r/∂x
+        b_z = np.stack([np.zeros_like(psi), np.ones_like(psi), radius * cos_psi])  # ∂s_z/∂x
+        weights = np.stack([cos_psi, np.ones_like(psi), radius * cos_psi])  # g = (cos ψ f_r, f_z, R cos ψ f_z)
+        df_r = d_rr * b_r + d_rz * b_z  # (3, N): ∂f_r/∂x
+        df_z = d_rz * b_r + d_zz * b_z
+        stiffness[0] += np.sum(weights[0] * df_r, axis=1)
+        stiffness[1] += np.sum(df_z, axis=1)
+        stiffness[2] += np.sum(weights[2] * df_z, axis=1)
+    return Distribution(np.array([radial, axial, tilt]), load, stiffness, ball_loads, angles, psi)
+
+
+def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = None, tolerance: float = 1e-12,
+          iterations: int = 100) -> Distribution:
+    """The inner-ring displacement that carries ``load`` = (F_r [N], F_a [N], M [N m]), with the coordinates named
+    in ``imposed`` ({"radial" | "axial" | "tilt": value}) held at their values instead (their load entries are
+    then outputs). Newton's method on the free coordinates, backtracking on the residual; converged when the
+    residual is below ``tolerance`` × the largest of the load and the ball loads' sum."""
+    imposed = dict(imposed or {})
+    for name in imposed:
+        if name not in COORDINATES:
+            raise SpecError("imposed", name, f"one of {', '.join(COORDINATES)}")
+    free = np.array([name not in imposed for name in COORDINATES])
+    target = np.asarray(load, dtype=float)
+    x = np.array([imposed.get(name, 0.0) for name in COORDINATES])
+    if not free.any() or not np.any(target[free]):
+        return evaluate(bearing, x)  # everything imposed, or nothing to carry: the rings stay where they are
+    # start with an axial (or radial) approach that loads some balls, so that the Jacobian is not singular
+    x[free] += 1e-3 * bearing.centre_distance
+    for _ in range(iterations):
+        state = evaluate(bearing, x)
+        residual = (state.load - target)[free]
+        scale = max(np.abs(target).max(), state.ball_loads.sum(), 1.0)
+        if np.abs(residual).max() <= tolerance * scale:
+            return state
+        jacobian = state.stiffness[np.ix_(free, free)]
+        step = np.linalg.lstsq(jacobian, -residual, rcond=None)[0]
+        norm, factor = np.abs(residual).max(), 1.0
+        while factor > 1e-6:
+            trial = x.copy()
+            trial[free] += factor * step
+            if np.abs((evaluate(bearing, trial).load - target)[free]).max() < norm:
+                break
+            factor /= 2
+        x = trial
+    raise RuntimeError(f"the load distribution did not converge in {iterations} iterations (residual {norm:.3g})")
