@@ -1,0 +1,123 @@
+"""``bearing-mbs slewing``: the quasi-static load distribution of a slewing-bearing scenario, written as
+``summary.json`` (SI units, its ``units`` map) and figures.
+
+* with a load: the inner ring's displacement, the ball loads and contact angles around the ring, the largest
+  ball load and contact pressure (exact Hertz, :mod:`bearing_mbs.contact.point_contact`), the 3×3 stiffness;
+* with ``axial_displacements``: the axial load–deflection curve, drawn with the engineering formula (3) of
+  document 002 for comparison.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_contact
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.io.json import json_safe, rounded, write_json
+from bearing_mbs.models.slewing_bearing.load_distribution import Distribution, SlewingBearing, solve
+from bearing_mbs.models.slewing_bearing.spec import SlewingSpec
+from bearing_mbs.spec import SpecError
+
+SUMMARY_FILE = "summary.json"
+UNITS = {"displacement": "m, m, rad", "load": "N, N, N m", "stiffness": "SI (N/m, N/rad, N m/m, N m/rad)",
+         "axial_curve": "m, N", "max_ball_load": "N", "max_contact_pressure": "Pa", "ball_loads": "N",
+         "contact_angles": "deg", "azimuths": "deg", "balls": "count", "diagonal_stiffness": "N/m^1.5"}
+
+
+def bearing_of(spec: SlewingSpec) -> SlewingBearing:
+    """The bearing of the scenario's ``[slewing]`` section (an error names the section's field)."""
+    s = spec.slewing
+    try:
+        return SlewingBearing(s.pitch_diameter, s.ball_diameter, s.conformity, spec.contact_angle_rad, s.balls)
+    except SpecError as error:
+        raise error.within("slewing") from None
+
+
+def engineering_deflection(axial_load: float, pitch_diameter: float) -> float:
+    """Document 002's engineering formula (3), δ = [F_a/(3300 D_pw^0.35)]^1.6 with F_a in kN, D_pw in mm and δ in
+    mm (the units are the digest's inference from magnitudes); here in N, m → m."""
+    return (axial_load / 1e3 / (3300.0 * (pitch_diameter * 1e3) ** 0.35)) ** 1.6 * 1e-3
+
+
+def largest_pressure(spec: SlewingSpec, state: Distribution) -> float:
+    """The largest contact pressure [Pa] over the balls' inner and outer contacts (exact Hertz at each loaded
+    contact's angle)."""
+    s = spec.slewing
+    modulus = effective_modulus(s.youngs_modulus, s.poisson_ratio, s.youngs_modulus, s.poisson_ratio)
+    k, d = np.unravel_index(int(np.argmax(state.ball_loads)), state.ball_loads.shape)
+    load = state.ball_loads[k, d]
+    if load <= 0:
+        return 0.0
+    return max(hertz_contact(load, ball_groove_curvatures(s.ball_diameter, s.conformity, s.pitch_diameter,
+                                                          state.contact_angles[k, d], ring), modulus).p_max
+               for ring in ("inner", "outer"))
+
+
+def slewing_summary(spec: SlewingSpec) -> tuple[dict, list[Distribution]]:
+    bearing = bearing_of(spec)
+    load = spec.load
+    summary = {"scenario": spec.scenario.name, "balls": bearing.balls, "diagonal_stiffness": bearing.stiffness}
+    if load.axial_displacements:
+        states = [solve(bearing, imposed={"radial": 0.0, "axial": d, "tilt": 0.0}) for d in load.axial_displacements]
+        summary["axial_curve"] = [[d, float(state.load[1])] for d, state in zip(load.axial_displacements, states)]
+    else:
+        states = [solve(bearing, (load.radial, load.axial, load.moment))]
+        summary["displacement"] = states[0].displacement.tolist()
+        summary["load"] = states[0].load.tolist()
+    last = max(states, key=lambda state: state.ball_loads.max())
+    summary.update({
+        "max_ball_load": float(last.ball_loads.max()),
+        "max_contact_pressure": largest_pressure(spec, last),
+        "stiffness": last.stiffness.tolist(),
+        "azimuths": np.degrees(last.azimuths).tolist(),
+        "ball_loads": last.ball_loads.tolist(),
+        "contact_angles": np.degrees(last.contact_angles).tolist(),
+    })
+    summary["units"] = {key: unit for key, unit in UNITS.items() if key in summary}
+    return rounded(json_safe(summary)), states
+
+
+def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True) -> dict:
+    """Solve the scenario and write ``summary.json`` (and the figures) to ``directory``."""
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    summary, states = slewing_summary(spec)
+    write_json(directory / SUMMARY_FILE, summary)
+    if figures:
+        _plot_around_the_ring(spec, states[-1], directory / "ball_loads.png")
+        if spec.load.axial_displacements:
+            _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png")
+    return summary
+
+
+def _plot_around_the_ring(spec, state, path):
+    figure, (loads, angles) = new_figure(2, 1, figsize=(7, 6), sharex=True)
+    azimuth = np.degrees(state.azimuths)
+    for d, label in enumerate(("diagonal 1", "diagonal 2")):
+        loads.plot(azimuth, state.ball_loads[:, d] / 1e3, ".-", label=label)
+        loaded = state.ball_loads[:, d] > 0
+        angles.plot(azimuth[loaded], np.degrees(state.contact_angles[loaded, d]), ".", label=label)
+    loads.set_ylabel("ball load [kN]")
+    angles.set_ylabel("contact angle [deg]")
+    angles.set_xlabel("azimuth ψ [deg] (0 along +x)")
+    loads.legend()
+    loads.set_title(f"{spec.scenario.name}: {state.ball_loads.shape[0]} balls, rigid rings")
+    return save_figure(figure, path)
+
+
+def _plot_curve(spec, curve, path):
+    displacement, force = np.array(curve).T
+    figure, axis = new_figure(figsize=(7, 5))
+    axis.plot(displacement * 1e3, force / 1e3, "o-", label="rigid rings (this model)")
+    engineering = [engineering_deflection(f, spec.slewing.pitch_diameter) + d for d, f in zip(displacement, force)]
+    axis.plot(np.array(engineering) * 1e3, force / 1e3, "--", label="+ ring deflection of the engineering formula (3)")
+    axis.set_xlabel("axial displacement [mm]")
+    axis.set_ylabel("axial force [kN]")
+    axis.grid(True, alpha=0.3)
+    axis.legend()
+    axis.set_title(f"{spec.scenario.name}: D_pw = {spec.slewing.pitch_diameter:g} m, α₀ = "
+                   f"{math.degrees(spec.contact_angle_rad):g}°")
+    return save_figure(figure, path)

@@ -1,0 +1,54 @@
+"""``bearing-mbs slewing``: the shipped scenarios of document 002 solve and write what docs/slewing.md says.
+
+References: the ball counts of the thesis's Table 2 (44 … 224, exact); the summary's curve is the solver's
+(checked against the thesis's FE curve in tests/test_slewing_load_distribution.py) and its largest contact
+pressure at the FE model's 0.42 mm is the exact Hertz pressure of its largest ball load (1e-9); bad input exits 2
+with nothing written.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+
+import pytest
+
+from bearing_mbs.cli import main
+
+from cases import SCENARIOS
+
+BALLS = {"0500": 44, "1000": 89, "1500": 134, "2000": 179, "2500": 224}
+
+
+@pytest.mark.parametrize("diameter", list(BALLS))
+def test_the_seed_scenarios_solve(diameter, tmp_path):
+    assert main(["slewing", str(SCENARIOS / f"seed_slewing_{diameter}.toml"), "--out", str(tmp_path / "out"),
+                 "--no-figures"]) == 0
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert summary["balls"] == BALLS[diameter]
+    displacements, forces = zip(*summary["axial_curve"])
+    assert displacements[-1] == pytest.approx(0.42e-3) and all(b > a for a, b in itertools.pairwise(forces))
+    assert summary["units"]["axial_curve"] == "m, N" and summary["units"]["max_contact_pressure"] == "Pa"
+    assert len(summary["ball_loads"]) == BALLS[diameter] == len(summary["contact_angles"])
+
+
+def test_a_combined_load_writes_the_state_and_figures(tmp_path):
+    out = tmp_path / "out"
+    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out),
+                 "--set", "load.axial_displacements=[]", "--set", "load.axial=5e6", "--set", "load.moment=2e6"]) == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["load"] == pytest.approx([0.0, 5e6, 2e6], abs=1e-2)
+    assert (out / "ball_loads.png").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("override, field", [
+    ("slewing.conformity=1.2", "slewing.conformity"),
+    ("slewing.contact_angle=95", "slewing.contact_angle"),
+    ("slewing.balls=300", "slewing.balls"),
+    ("load.axial=1e6", "load.axial_displacements"),
+])
+def test_bad_input_is_refused(override, field, tmp_path, capsys):
+    out = tmp_path / "out"
+    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out), "--set", override]) == 2
+    assert not out.exists()
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith(f"error: {field} = ")
