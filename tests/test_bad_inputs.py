@@ -58,7 +58,7 @@ SCENARIO_ROWS = {
     # the shared sections
     "negative end time": (STEADY, ["scenario.end_time=-1"], "scenario.end_time"),
     "unknown model": (STEADY, ["scenario.model='turbine'"], "scenario.model"),
-    "a static-only model given to run": ("seed_slewing_1500.toml", [], "scenario.model"),
+    "a slewing scenario without a blade to run": ("seed_slewing_1500.toml", [], "pitch"),
     "unknown engine": (STEADY, ["solver.engine='abaqus'"], "solver.engine"),
     "unknown reference method": (STEADY, ["solver.reference.method='rk5'"], "solver.reference.method"),
     "unknown Exudyn method": (STEADY, ["solver.exudyn.method='newmark'"], "solver.exudyn.method"),

@@ -18,14 +18,14 @@ def register(commands) -> dict:
 
 def _slewing(args) -> int:
     """Exit 0: solved and written; 2: bad input (nothing written)."""
-    from bearing_mbs.models.slewing_bearing.spec import SlewingSpec
+    from bearing_mbs.models import load_spec
+    from bearing_mbs.models.slewing_bearing.spec import MODEL_NAME
     from bearing_mbs.models.slewing_bearing.static import write_slewing
-    from bearing_mbs.spec import apply_override, from_mapping, parse_override, read_toml
+    from bearing_mbs.spec import SpecError
 
-    data = read_toml(args.scenario)
-    for text in args.set:
-        apply_override(data, *parse_override(text))
-    spec = from_mapping(SlewingSpec, data)
+    spec = load_spec(args.scenario, args.set)
+    if spec.scenario.model != MODEL_NAME:
+        raise SpecError("scenario.model", spec.scenario.model, f"{MODEL_NAME!r} for this command")
     summary = write_slewing(spec, output_directory(args), figures=not args.no_figures)
     what = (f"{len(summary['axial_curve'])} curve points" if "axial_curve" in summary
             else f"displacement {summary['displacement']}")

@@ -8,9 +8,6 @@ from pathlib import Path
 from bearing_mbs.models.registry import MODELS
 from bearing_mbs.spec import Spec, SpecError, apply_override, from_mapping, parse_override, read_toml
 
-#: Scenario models with a static command but no dynamic model yet: model -> the command that reads them.
-STATIC_ONLY = {"slewing_bearing": "bearing-mbs slewing"}
-
 
 def load_spec(path: str | Path, overrides: list[str] = ()) -> Spec:
     """Read a TOML scenario file, apply ``section.key=value`` overrides, validate everything."""
@@ -32,9 +29,6 @@ def spec_from_mapping(data: dict) -> Spec:
     if not isinstance(scenario, dict):
         raise SpecError("scenario", scenario, "a [scenario] table with name, model and end_time is required")
     model = scenario.get("model")
-    if isinstance(model, str) and model in STATIC_ONLY:
-        raise SpecError("scenario.model", model, f"a model that runs ({', '.join(MODELS)}); this one is read by "
-                                                 f"`{STATIC_ONLY[model]}` (a static solve)")
     if not isinstance(model, str) or model not in MODELS:
         raise SpecError("scenario.model", model, f"must be one of {', '.join(MODELS)}")
     data = {key: value for key, value in copy.deepcopy(data).items() if value not in ([], {})}

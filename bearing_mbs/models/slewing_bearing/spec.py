@@ -1,8 +1,9 @@
 """A ``slewing_bearing`` scenario: ``[scenario]`` (``model = "slewing_bearing"``), ``[slewing]`` and ``[load]``.
 
-So far the static command reads it (``bearing-mbs slewing``); rigid rings only. Flexible rings (the condensed
-matrices of :mod:`.ring_stiffness` assembled around the ring) and the multibody force element are to come, so
-the keys for them are not accepted yet.
+``bearing-mbs slewing`` solves it statically; ``bearing-mbs run`` simulates it when it has a ``[pitch]`` section (a
+blade root carried by the bearing under a gusting tilting moment). Rigid rings only: flexible rings (the
+condensed matrices of :mod:`.ring_stiffness` assembled around the ring) are to come, so their keys are not
+accepted yet.
 """
 
 from __future__ import annotations
@@ -68,17 +69,45 @@ class SlewingLoad:
 
 
 @dataclass(frozen=True)
+class PitchSection:
+    """``[pitch]``: the blade root a pitch bearing carries, for ``bearing-mbs run``. blade_mass [kg] > 0 and
+    blade_inertia [kg m²] > 0 (about the tilt axis) of the body on the inner ring; damping β [s] >= 0 of the
+    bearing (stiffness-proportional); gust_amplitude [N m] and gust_period [s] > 0: the tilting moment is
+    [load] moment + gust_amplitude · sin(2π t/gust_period); ramp_time [s] >= 0: every load rises from 0 along a
+    half cosine over it."""
+
+    blade_mass: float
+    blade_inertia: float
+    damping: float = 0.0
+    gust_amplitude: float = 0.0
+    gust_period: float = 1.0
+    ramp_time: float = 0.0
+
+    def __post_init__(self):
+        positive("blade_mass", self.blade_mass)
+        positive("blade_inertia", self.blade_inertia)
+        for name in ("damping", "ramp_time"):
+            in_range(name, getattr(self, name), 0.0, math.inf)
+        finite("gust_amplitude", self.gust_amplitude)
+        positive("gust_period", self.gust_period)
+
+
+@dataclass(frozen=True)
 class SlewingSpec(Spec):
     """A ``slewing_bearing`` scenario."""
 
     slewing: SlewingSection | None = None
     load: SlewingLoad | None = None
+    pitch: PitchSection | None = None
 
     def __post_init__(self):
         super().__post_init__()
         require(self.scenario.model == MODEL_NAME, "scenario.model", self.scenario.model, f"{MODEL_NAME!r}")
         require(self.slewing is not None, "slewing", None, "a [slewing] section")
         require(self.load is not None, "load", None, "a [load] section: axial, radial, moment or axial_displacements")
+        if self.pitch is not None:
+            require(not self.load.axial_displacements, "load.axial_displacements", list(self.load.axial_displacements),
+                    "not with [pitch]: a run applies loads")
 
     @property
     def contact_angle_rad(self) -> float:

@@ -1,0 +1,166 @@
+r"""Four-point-contact slewing bearings as a force element: the balls' diagonals between a body and the ground.
+
+The body's displacement from where it starts, in the bearing's axial plane (x: radial [m], y: axial [m], θ: tilt
+[rad]), is the inner ring's (δ_r, δ_a, θ) of the quasi-static model
+(:mod:`bearing_mbs.models.slewing_bearing.load_distribution`, where the equations are): ball j at azimuth
+ψ_j = 2πj/N, diagonal d = ±1, centre separation s = A₀ e_d + (δ_r cos ψ_j, δ_a + θ R cos ψ_j), force
+Q = K (|s| − A₀)^{3/2} along s when the centres have moved apart. The body receives −Σ Bᵀ Q ŝ, the force of the
+potential Σ K δ^{5/2}/(5/2) (conservative), plus a stiffness-proportional damping −β K_t v with K_t the bearing's
+tangent stiffness (dissipating β vᵀK_t v ≥ 0). The outer ring is the ground.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numba
+import numpy as np
+
+from bearing_mbs.contact.normal import elastic_energy
+from bearing_mbs.core.force_element import ForceElement
+
+
+@dataclass(frozen=True)
+class SlewingBearingJoint:
+    """A slewing bearing between the ground (its outer ring) and ``body`` (what its inner ring carries).
+
+    balls N >= 1; pitch_radius R [m] > 0; centre_distance A₀ [m] > 0; contact_angle α₀ [rad]; stiffness K
+    [N/m^1.5] of a diagonal; damping β [s] >= 0 (stiffness-proportional); reference (x, y, θ) [m, m, rad]: the
+    body's position where the balls just touch.
+    """
+
+    name: str
+    body: int
+    balls: int
+    pitch_radius: float
+    centre_distance: float
+    contact_angle: float
+    stiffness: float
+    damping: float
+    reference: tuple[float, float, float]
+
+
+class SlewingBearingArrays(NamedTuple):
+    body: np.ndarray  # (J,) int64
+    balls: np.ndarray  # (J,) int64
+    pitch_radius: np.ndarray  # (J,) [m]
+    centre_distance: np.ndarray  # (J,) [m]
+    contact_angle: np.ndarray  # (J,) [rad]
+    stiffness: np.ndarray  # (J,) [N/m^1.5]
+    damping: np.ndarray  # (J,) [s]
+    reference: np.ndarray  # (J, 3)
+
+
+def pack(joints) -> SlewingBearingArrays:
+    def column(get, dtype=float):
+        return np.array([get(j) for j in joints], dtype=dtype)
+
+    return SlewingBearingArrays(
+        body=column(lambda j: j.body, np.int64), balls=column(lambda j: j.balls, np.int64),
+        pitch_radius=column(lambda j: j.pitch_radius), centre_distance=column(lambda j: j.centre_distance),
+        contact_angle=column(lambda j: j.contact_angle), stiffness=column(lambda j: j.stiffness),
+        damping=column(lambda j: j.damping), reference=column(lambda j: j.reference).reshape(-1, 3))
+
+
+@numba.njit(cache=True, inline="always")
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    joints = parameters
+    for j in range(joints.body.size):
+        i = 3 * joints.body[j]
+        radial = q[i] - joints.reference[j, 0]
+        axial = q[i + 1] - joints.reference[j, 1]
+        tilt = q[i + 2] - joints.reference[j, 2]
+        a0, k, r = joints.centre_distance[j], joints.stiffness[j], joints.pitch_radius[j]
+        alpha, beta, balls = joints.contact_angle[j], joints.damping[j], joints.balls[j]
+        f0 = f1 = f2 = 0.0
+        k00 = k01 = k02 = k11 = k12 = k22 = 0.0
+        for n in range(balls):
+            c = math.cos(2.0 * math.pi * n / balls)
+            for d in (1.0, -1.0):
+                s_r = a0 * math.cos(alpha) + radial * c
+                s_z = d * a0 * math.sin(alpha) + axial + tilt * r * c
+                length = math.sqrt(s_r * s_r + s_z * s_z)
+                approach = length - a0
+                if approach <= 0.0:
+                    continue
+                load = k * approach**1.5
+                slope = 1.5 * k * math.sqrt(approach)
+                u_r, u_z = s_r / length, s_z / length
+                f0 += load * u_r * c
+                f1 += load * u_z
+                f2 += load * u_z * r * c
+                if beta > 0.0:
+                    tangent = load / length
+                    d_rr = slope * u_r * u_r + tangent * (1.0 - u_r * u_r)
+                    d_rz = (slope - tangent) * u_r * u_z
+                    d_zz = slope * u_z * u_z + tangent * (1.0 - u_z * u_z)
+                    k00 += d_rr * c * c
+                    k01 += d_rz * c
+                    k02 += d_rz * r * c * c
+                    k11 += d_zz
+                    k12 += d_zz * r * c
+                    k22 += d_zz * r * r * c * c
+        v0, v1, v2 = v[i], v[i + 1], v[i + 2]
+        g0 = beta * (k00 * v0 + k01 * v1 + k02 * v2)
+        g1 = beta * (k01 * v0 + k11 * v1 + k12 * v2)
+        g2 = beta * (k02 * v0 + k12 * v1 + k22 * v2)
+        forces[i] -= f0 + g0
+        forces[i + 1] -= f1 + g1
+        forces[i + 2] -= f2 + g2
+        power[1] += g0 * v0 + g1 * v1 + g2 * v2
+
+
+def _state(joints, j, q, v):
+    """Bearing load (3,), tangent stiffness (3, 3) and ball loads (N, 2) of joint j, with numpy."""
+    i = 3 * joints.body[j]
+    radial, axial, tilt = q[i:i + 3] - joints.reference[j]
+    balls, a0, r = joints.balls[j], joints.centre_distance[j], joints.pitch_radius[j]
+    c = np.cos(2 * np.pi * np.arange(balls) / balls)
+    b = np.stack([np.stack([c, 0 * c, 0 * c], axis=1), np.stack([0 * c, 1 + 0 * c, r * c], axis=1)], axis=1)
+    load, stiffness, ball_loads = np.zeros(3), np.zeros((3, 3)), np.zeros((balls, 2))
+    for column, d in enumerate((1.0, -1.0)):
+        s = np.stack([a0 * np.cos(joints.contact_angle[j]) + radial * c,
+                      d * a0 * np.sin(joints.contact_angle[j]) + axial + tilt * r * c], axis=1)
+        length = np.linalg.norm(s, axis=1)
+        approach = np.maximum(length - a0, 0.0)
+        q_ball = joints.stiffness[j] * approach**1.5
+        slope = 1.5 * joints.stiffness[j] * np.sqrt(approach)
+        unit = s / length[:, None]
+        ball_loads[:, column] = q_ball
+        load += np.einsum("nki,nk->i", b, q_ball[:, None] * unit)
+        outer = np.einsum("ni,nj->nij", unit, unit)
+        derivative = slope[:, None, None] * outer + (q_ball / length)[:, None, None] * (np.eye(2) - outer)
+        stiffness += np.einsum("nki,nkl,nlj->ij", b, derivative, b)
+    return load, stiffness, ball_loads
+
+
+def add_forces_twin(joints, t, q, v, latched, forces, pair_out, power, complete):
+    for j in range(joints.body.size):
+        i = 3 * joints.body[j]
+        load, stiffness, _ = _state(joints, j, q, v)
+        damping = joints.damping[j] * stiffness @ v[i:i + 3]
+        forces[i:i + 3] -= load + damping
+        power[1] += damping @ v[i:i + 3]
+
+
+def potential_energy(joints, position, pair_output):
+    """Σ K δ^{5/2}/(5/2) over the balls' diagonals [J] at each output instant."""
+    energy = np.zeros(position.shape[0])
+    for j in range(joints.body.size):
+        i = 3 * joints.body[j]
+        relative = position[:, i:i + 3] - joints.reference[j]
+        balls, a0, r = joints.balls[j], joints.centre_distance[j], joints.pitch_radius[j]
+        c = np.cos(2 * np.pi * np.arange(balls) / balls)[None, :]
+        for d in (1.0, -1.0):
+            s_r = a0 * np.cos(joints.contact_angle[j]) + relative[:, 0:1] * c
+            s_z = d * a0 * np.sin(joints.contact_angle[j]) + relative[:, 1:2] + relative[:, 2:3] * r * c
+            gap = a0 - np.hypot(s_r, s_z)  # negative: the centres have moved apart, the ball is squeezed
+            energy += elastic_energy(gap, joints.stiffness[j], 1.5).sum(axis=1)
+    return energy
+
+
+ELEMENT = ForceElement(name="slewing_bearings", item_type=SlewingBearingJoint, parameters=SlewingBearingArrays,
+                       pack=pack, add_forces=add_forces, add_forces_twin=add_forces_twin,
+                       potential_energy=potential_energy)
