@@ -112,34 +112,51 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         power[1] += g0 * v0 + g1 * v1 + g2 * v2
 
 
-def _state(joints, j, q, v):
-    """Bearing load (3,), tangent stiffness (3, 3) and ball loads (N, 2) of joint j, with numpy."""
-    i = 3 * joints.body[j]
-    radial, axial, tilt = q[i:i + 3] - joints.reference[j]
-    balls, a0, r = joints.balls[j], joints.centre_distance[j], joints.pitch_radius[j]
+def centre_separations(balls: int, pitch_radius: float, centre_distance: float, contact_angle: float,
+                       displacement) -> tuple[np.ndarray, np.ndarray]:
+    """(s_r, s_z) [m], each (..., N, 2), of the diagonals d = +1, −1 (last axis) of every ball at the inner ring's
+    ``displacement`` (..., 3) = (δ_r [m], δ_a [m], θ [rad]) (module docstring)."""
+    x = np.asarray(displacement, dtype=float)[..., None, None, :]
+    c = np.cos(2 * np.pi * np.arange(balls) / balls)[:, None]
+    d = np.array([1.0, -1.0])
+    s_r = centre_distance * np.cos(contact_angle) + x[..., 0] * c + 0 * d
+    s_z = d * centre_distance * np.sin(contact_angle) + x[..., 1] + x[..., 2] * pitch_radius * c
+    return s_r, s_z
+
+
+def bearing_state(balls: int, pitch_radius: float, centre_distance: float, contact_angle: float, stiffness: float,
+                  displacement) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """With numpy, at one ``displacement`` (3,): the bearing's load Σ Bᵀ Q ŝ (F_r [N], F_a [N], M [N m]), its
+    tangent stiffness Σ Bᵀ (∂(Qŝ)/∂s) B (3×3, with ∂(Qŝ)/∂s = Q′ ŝŝᵀ + (Q/|s|)(I − ŝŝᵀ)), and per ball and diagonal
+    (N, 2) the loads Q [N] and contact angles atan2(|s_z|, s_r) [rad]."""
+    s_r, s_z = centre_separations(balls, pitch_radius, centre_distance, contact_angle, displacement)
+    length = np.hypot(s_r, s_z)
+    approach = np.maximum(length - centre_distance, 0.0)
+    q = stiffness * approach**1.5
+    slope = 1.5 * stiffness * np.sqrt(approach)
+    unit = np.stack([s_r, s_z], axis=-1) / length[..., None]  # (N, 2 diagonals, 2 components)
     c = np.cos(2 * np.pi * np.arange(balls) / balls)
-    b = np.stack([np.stack([c, 0 * c, 0 * c], axis=1), np.stack([0 * c, 1 + 0 * c, r * c], axis=1)], axis=1)
-    load, stiffness, ball_loads = np.zeros(3), np.zeros((3, 3)), np.zeros((balls, 2))
-    for column, d in enumerate((1.0, -1.0)):
-        s = np.stack([a0 * np.cos(joints.contact_angle[j]) + radial * c,
-                      d * a0 * np.sin(joints.contact_angle[j]) + axial + tilt * r * c], axis=1)
-        length = np.linalg.norm(s, axis=1)
-        approach = np.maximum(length - a0, 0.0)
-        q_ball = joints.stiffness[j] * approach**1.5
-        slope = 1.5 * joints.stiffness[j] * np.sqrt(approach)
-        unit = s / length[:, None]
-        ball_loads[:, column] = q_ball
-        load += np.einsum("nki,nk->i", b, q_ball[:, None] * unit)
-        outer = np.einsum("ni,nj->nij", unit, unit)
-        derivative = slope[:, None, None] * outer + (q_ball / length)[:, None, None] * (np.eye(2) - outer)
-        stiffness += np.einsum("nki,nkl,nlj->ij", b, derivative, b)
-    return load, stiffness, ball_loads
+    b = np.zeros((balls, 2, 3))  # ∂s/∂x per ball: rows s_r, s_z
+    b[:, 0, 0], b[:, 1, 1], b[:, 1, 2] = c, 1.0, pitch_radius * c
+    load = np.einsum("nki,ndk->i", b, q[..., None] * unit)
+    outer = np.einsum("ndk,ndl->ndkl", unit, unit)
+    derivative = slope[..., None, None] * outer + (q / length)[..., None, None] * (np.eye(2) - outer)
+    tangent = np.einsum("nki,ndkl,nlj->ij", b, derivative, b)
+    return load, tangent, q, np.arctan2(np.abs(s_z), s_r)
+
+
+def _state(joints, j, q):
+    """Bearing load (3,) and tangent stiffness (3, 3) of joint j at positions q, with numpy."""
+    i = 3 * joints.body[j]
+    load, tangent, _, _ = bearing_state(joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j],
+                                        joints.contact_angle[j], joints.stiffness[j], q[i:i + 3] - joints.reference[j])
+    return load, tangent
 
 
 def add_forces_twin(joints, t, q, v, latched, forces, pair_out, power, complete):
     for j in range(joints.body.size):
         i = 3 * joints.body[j]
-        load, stiffness, _ = _state(joints, j, q, v)
+        load, stiffness = _state(joints, j, q)
         damping = joints.damping[j] * stiffness @ v[i:i + 3]
         forces[i:i + 3] -= load + damping
         power[1] += damping @ v[i:i + 3]
@@ -150,14 +167,10 @@ def potential_energy(joints, position, pair_output):
     energy = np.zeros(position.shape[0])
     for j in range(joints.body.size):
         i = 3 * joints.body[j]
-        relative = position[:, i:i + 3] - joints.reference[j]
-        balls, a0, r = joints.balls[j], joints.centre_distance[j], joints.pitch_radius[j]
-        c = np.cos(2 * np.pi * np.arange(balls) / balls)[None, :]
-        for d in (1.0, -1.0):
-            s_r = a0 * np.cos(joints.contact_angle[j]) + relative[:, 0:1] * c
-            s_z = d * a0 * np.sin(joints.contact_angle[j]) + relative[:, 1:2] + relative[:, 2:3] * r * c
-            gap = a0 - np.hypot(s_r, s_z)  # negative: the centres have moved apart, the ball is squeezed
-            energy += elastic_energy(gap, joints.stiffness[j], 1.5).sum(axis=1)
+        s_r, s_z = centre_separations(joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j],
+                                      joints.contact_angle[j], position[:, i:i + 3] - joints.reference[j])
+        gap = joints.centre_distance[j] - np.hypot(s_r, s_z)  # negative: the centres moved apart, a ball squeezed
+        energy += elastic_energy(gap, joints.stiffness[j], 1.5).sum(axis=(1, 2))
     return energy
 
 

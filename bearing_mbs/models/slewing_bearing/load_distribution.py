@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_stiffness
+from bearing_mbs.elements.slewing_bearings import bearing_state
 from bearing_mbs.models.slewing_bearing.geometry import ball_count
 from bearing_mbs.spec import SpecError
 
@@ -109,40 +110,13 @@ class Distribution:
 
 
 def evaluate(bearing: SlewingBearing, displacement) -> Distribution:
-    """Ball loads, the bearing's load and its analytic stiffness at the inner-ring ``displacement``."""
-    radial, axial, tilt = (float(v) for v in displacement)
-    a0, k, alpha0 = bearing.centre_distance, bearing.stiffness, bearing.contact_angle
-    psi = bearing.azimuths
-    cos_psi = np.cos(psi)
-    radius = bearing.pitch_diameter / 2
-    load, stiffness = np.zeros(3), np.zeros((3, 3))
-    ball_loads, angles = np.zeros((psi.size, 2)), np.zeros((psi.size, 2))
-    for column, d in enumerate((1.0, -1.0)):
-        s_r = a0 * math.cos(alpha0) + radial * cos_psi
-        s_z = d * a0 * math.sin(alpha0) + axial + tilt * radius * cos_psi
-        length = np.hypot(s_r, s_z)
-        approach = np.maximum(length - a0, 0.0)
-        q = k * approach**1.5
-        dq = 1.5 * k * np.sqrt(approach)
-        unit_r, unit_z = s_r / length, s_z / length
-        ball_loads[:, column] = q
-        angles[:, column] = np.arctan2(np.abs(s_z), s_r)
-        f_r, f_z = q * unit_r, q * unit_z
-        load += [np.sum(f_r * cos_psi), np.sum(f_z), np.sum(radius * cos_psi * f_z)]
-        # ∂f/∂s = Q' ŝŝᵀ + (Q/|s|)(I − ŝŝᵀ), then Bᵀ (∂f/∂s) B
-        tangent = q / length
-        d_rr = dq * unit_r**2 + tangent * (1 - unit_r**2)
-        d_rz = (dq - tangent) * unit_r * unit_z
-        d_zz = dq * unit_z**2 + tangent * (1 - unit_z**2)
-        b_r = np.stack([cos_psi, np.zeros_like(psi), np.zeros_like(psi)])  # ∂s_r/∂x
-        b_z = np.stack([np.zeros_like(psi), np.ones_like(psi), radius * cos_psi])  # ∂s_z/∂x
-        weights = np.stack([cos_psi, np.ones_like(psi), radius * cos_psi])  # g = (cos ψ f_r, f_z, R cos ψ f_z)
-        df_r = d_rr * b_r + d_rz * b_z  # (3, N): ∂f_r/∂x
-        df_z = d_rz * b_r + d_zz * b_z
-        stiffness[0] += np.sum(weights[0] * df_r, axis=1)
-        stiffness[1] += np.sum(df_z, axis=1)
-        stiffness[2] += np.sum(weights[2] * df_z, axis=1)
-    return Distribution(np.array([radial, axial, tilt]), load, stiffness, ball_loads, angles, psi)
+    """Ball loads, the bearing's load and its analytic stiffness at the inner-ring ``displacement`` (the equations'
+    one owner is :func:`bearing_mbs.elements.slewing_bearings.bearing_state`, which the force element uses too)."""
+    x = np.array([float(v) for v in displacement])
+    load, stiffness, ball_loads, angles = bearing_state(bearing.balls, bearing.pitch_diameter / 2,
+                                                        bearing.centre_distance, bearing.contact_angle,
+                                                        bearing.stiffness, x)
+    return Distribution(x, load, stiffness, ball_loads, angles, bearing.azimuths)
 
 
 def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = None, tolerance: float = 1e-12,
