@@ -74,6 +74,16 @@ class SlipCheck:
         return judged("spurious_slip", self.ratio, 1.0, not self.spurious, "-", self.message)
 
 
+def slip_tolerances(slip, reference_slip, regularisation, slip_tolerance: float = SLIP_TOLERANCE) -> np.ndarray:
+    """How far ``slip`` may sit from ``reference_slip`` [m/s] and still be converged: ``slip_tolerance`` × v_reg,
+    or, where both slide the same way faster than :data:`SATURATION` v_reg (saturated friction), also
+    :data:`SLIDING_TOLERANCE` of the reference. Arrays broadcast."""
+    sliding = (np.abs(reference_slip) > SATURATION * regularisation) & (slip * reference_slip > 0) \
+        & (np.abs(slip) > SATURATION * regularisation)
+    absolute = slip_tolerance * regularisation
+    return np.where(sliding, np.maximum(absolute, SLIDING_TOLERANCE * np.abs(reference_slip)), absolute)
+
+
 def compare_slips(scene: Scene, run: Result, reference: Result, load_fraction: float = LOAD_FRACTION,
                   slip_tolerance: float = SLIP_TOLERANCE) -> dict:
     """Largest slip difference of ``run`` against ``reference`` over loaded friction pairs at the reference's output
@@ -95,10 +105,7 @@ def compare_slips(scene: Scene, run: Result, reference: Result, load_fraction: f
     reference_slip = reference.pair_series("slip")[:count]
     slip = resample(run.time, run.pair_series("slip"), reference.time[:count])
     regularisation = np.array([p.law.regularisation_speed for p in scene.pairs])[None, :]
-    sliding = (np.abs(reference_slip) > SATURATION * regularisation) & (slip * reference_slip > 0) \
-        & (np.abs(slip) > SATURATION * regularisation)
-    tolerance = np.where(sliding, np.maximum(slip_tolerance * regularisation, SLIDING_TOLERANCE * np.abs(reference_slip)),
-                         slip_tolerance * regularisation)
+    tolerance = slip_tolerances(slip, reference_slip, regularisation, slip_tolerance)
     with np.errstate(invalid="ignore"):
         ratio = np.where(loaded, np.abs(slip - reference_slip) / tolerance, -1.0)
     ratio = np.where(np.isnan(ratio), np.inf, ratio)  # a non-finite slip is as spurious as it gets
@@ -127,9 +134,7 @@ def compare_slip_levels(scene: Scene, run: Result, reference: Result, load_fract
                                 for column in speeds.T]))
     level, reference_level = levels
     regularisation = np.array([p.law.regularisation_speed for p in scene.pairs])
-    sliding = (reference_level > SATURATION * regularisation) & (level > SATURATION * regularisation)
-    tolerance = np.where(sliding, np.maximum(slip_tolerance * regularisation, SLIDING_TOLERANCE * reference_level),
-                         slip_tolerance * regularisation)
+    tolerance = slip_tolerances(level, reference_level, regularisation, slip_tolerance)
     with np.errstate(invalid="ignore", divide="ignore"):
         ratio = np.abs(level - reference_level) / tolerance
     window = (float(reference.time[0]), float(min(run.time[-1], reference.time[-1])))
