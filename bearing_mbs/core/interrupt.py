@@ -5,7 +5,8 @@ chunks (the reference engine) and end the run with :attr:`~bearing_mbs.core.fail
 keeping every output instant already computed. :func:`stop_on_signals` turns SIGINT and SIGTERM into such a
 request for the duration of a block (a command, or one run); a second signal of the same kind restores the
 default behaviour, so a user can still force an exit. Inside the block, :func:`active_request` is the request:
-loops over many runs (studies) poll it to stop after the run that was interrupted.
+every later run of the block sees it set and stops at its start, so a study ends with what it computed;
+:func:`stop_requested` lets a command skip follow-up work.
 """
 
 from __future__ import annotations

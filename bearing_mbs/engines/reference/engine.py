@@ -115,12 +115,10 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     stats = Stats(steps=int(counters[STEPS]), rejected_steps=int(counters[REJECTED]),
                   force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall)
     failure = Failure(status)
-    message = ""
+    message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
     if failure == Failure.INTERRUPTED:  # stopped at an output instant: keep the instants computed
-        message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
         series = [a[:index] for a in series]
     elif failure != Failure.NONE:
-        message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
         final = record(t)[:6]  # keep the state where the run stopped
         series = [np.concatenate([a[:index], np.asarray(b)[None]]) for a, b in zip(series, final)]
     out_t, out_q, out_v, out_pairs, out_work, out_constraints = series
