@@ -33,7 +33,9 @@ class Model:
     * ``linearise(scene)`` — operating point and modes for the step advisor, ``None`` for a scene it does not
       model; optional;
     * ``units`` — the unit of each entry ``metrics`` returns (``"N"``, ``"m/s"``, ``"-"``, ``"deg"``…), written to
-      summary.json's ``units`` map.
+      summary.json's ``units`` map;
+    * ``warnings(spec, scene, result) -> list[str]`` — what makes the run's numbers meaningless (the runner's
+      ``guard_warnings`` check; cheap: it runs for every run); none by default.
     """
 
     name: str
@@ -44,6 +46,7 @@ class Model:
     prepare: Callable[[dict], dict] = field(default=lambda data: data)
     linearise: Callable[[Scene], Any] | None = None
     units: dict = field(default_factory=dict)
+    warnings: Callable[[Any, Scene, Result], list] = field(default=lambda spec, scene, result: [])
 
 
 class ModelRegistry(Registry[Model]):

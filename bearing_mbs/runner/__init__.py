@@ -40,7 +40,7 @@ def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, 
     require_output_fits(scene, spec.solver, spec.scenario.end_time)
     require_initial_speeds_within_limit(scene, spec.solver)
     result = simulate_advised(scene, spec.solver, spec.scenario.end_time, progress, spec=to_mapping(spec))
-    warnings = MODELS[spec.scenario.model].metrics(spec, scene, result).get("warnings") or []
+    warnings = MODELS[spec.scenario.model].warnings(spec, scene, result)
     result.checks = run_checks(scene, spec.solver, spec.scenario.end_time, result, warnings)
     if not result.completed:
         log.warning("%s: %s", spec.scenario.name, result.message)

@@ -105,6 +105,25 @@ def load_distribution(scene, result, mask, bins: int) -> tuple[np.ndarray, np.nd
         return 0.5 * (edges[1:] + edges[:-1]), np.where(counts > 0, sums / np.maximum(counts, 1), np.nan)
 
 
+def cage_eccentricity(scene, result) -> float | None:
+    """The largest distance of the cage centre from the bearing axis over the run [m]; None without a cage."""
+    if not scene.topology.has("cage"):
+        return None
+    cage = scene.topology.body("cage")
+    return float(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1]).max())
+
+
+def bearing_warnings(spec, scene, result) -> list[str]:
+    """What makes the run's numbers meaningless: a cage more than half a roller diameter off the axis has left
+    its rollers (the runner's ``guard_warnings`` check)."""
+    eccentricity = cage_eccentricity(scene, result)
+    half_roller = spec.bearing.roller_diameter / 2
+    if eccentricity is None or not eccentricity > half_roller:
+        return []
+    return [f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller diameter: it has "
+            f"left its rollers and its speed is meaningless"]
+
+
 def bearing_metrics(spec, scene, result) -> dict:
     geometry = BearingGeometry.from_spec(spec.bearing)
     mask = window(spec, result)
@@ -128,13 +147,7 @@ def bearing_metrics(spec, scene, result) -> dict:
     def largest(values):
         return float(np.nanmax(np.abs(values))) if np.isfinite(values).any() else None
 
-    eccentricity, warnings = None, []
-    if scene.topology.has("cage"):
-        cage = scene.topology.body("cage")
-        eccentricity = float(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1]).max())
-        if eccentricity > geometry.roller_diameter / 2:
-            warnings.append(f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller "
-                            f"diameter: it has left its rollers and its speed is meaningless")
+    eccentricity = cage_eccentricity(scene, result)
 
     return {
         "mean_inner_speed_rpm": float(np.mean(inner_speed[mask]) * 60 / (2 * np.pi)),
@@ -153,5 +166,5 @@ def bearing_metrics(spec, scene, result) -> dict:
         "energy_balance_error": energy_balance_error(scene, result),
         "max_cage_eccentricity": eccentricity,
         "analysis_start": float(result.time[mask][0]),
-        "warnings": warnings,
+        "warnings": bearing_warnings(spec, scene, result),
     }

@@ -457,8 +457,8 @@ class BearingModelSpec(Spec):
         pitch_speed = math.pi * self.bearing.pitch * abs(self.drive.top_rpm) / 60
         require(pitch_speed <= PITCH_SPEED_LIMIT, "drive.speed_rpm", self.drive.top_rpm,
                 f"a pitch-circle speed π D_pw n/60 <= {PITCH_SPEED_LIMIT:g} m/s (n <= "
-                f"{PITCH_SPEED_LIMIT * 60 / (math.pi * self.bearing.pitch):.4g} rpm for D_pw = {self.bearing.pitch:g} m): "
-                f"beyond the fastest rolling bearings")
+                f"{PITCH_SPEED_LIMIT * 60 / (math.pi * self.bearing.pitch):.4g} rpm for D_pw = "
+                f"{self.bearing.pitch:g} m): beyond the fastest rolling bearings")
         capacity = static_load_rating(self.bearing)
         for name, value in (("load.radial", self.load.radial), ("load.final", self.load.final)):
             require(value <= LOAD_LIMIT * capacity, name, value,
