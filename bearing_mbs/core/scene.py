@@ -136,6 +136,12 @@ CONSTRAINT_KINDS = (DistanceConstraint, PointOnLineConstraint, OrbitConstraint)
 SENSORS = ("bodies", "pairs", "constraints", "energy")
 
 
+def half_cosine(tau):
+    """(1 − cos πτ)/2 for τ in [0, 1] and 1 beyond: a ramp from 0 to 1 whose slope starts and ends at zero."""
+    tau = np.minimum(np.asarray(tau, dtype=float), 1.0)
+    return 0.5 * (1.0 - np.cos(np.pi * tau))
+
+
 @dataclass(frozen=True)
 class Profile:
     """A time function: piecewise linear through (times [s], values), constant outside."""
@@ -159,8 +165,7 @@ class Profile:
         starts and ends at zero (a linear ramp's slope jumps excite a contact's modes about 15 times more), as
         ``points`` linear pieces; constant after."""
         tau = np.linspace(0.0, 1.0, points)
-        return cls(tuple(float(t) for t in duration * tau),
-                   tuple(float(v) for v in value * (0.5 * (1.0 - np.cos(np.pi * tau)))))
+        return cls(tuple(float(t) for t in duration * tau), tuple(float(v) for v in value * half_cosine(tau)))
 
     def __call__(self, t):
         return np.interp(t, self.times, self.values)

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.core.scene import Body, Profile, Scene
+from bearing_mbs.core.scene import Body, Profile, Scene, half_cosine
 from bearing_mbs.core.topology import Topology
 from bearing_mbs.elements import Load
 from bearing_mbs.elements.slewing_bearings import SlewingBearingJoint
@@ -32,11 +32,9 @@ COMPARED_INSTANTS = 40
 
 
 def ramp_factor(t, ramp_time: float):
-    """The half-cosine ramp (1 − cos πt/T_r)/2 up to T_r, 1 after (:meth:`Profile.smooth_ramp`'s shape)."""
+    """The loads' ramp at times t [s]: :func:`~bearing_mbs.core.scene.half_cosine` over ``ramp_time``, 1 without."""
     t = np.asarray(t, dtype=float)
-    if ramp_time <= 0:
-        return np.ones_like(t)
-    return np.where(t < ramp_time, 0.5 * (1 - np.cos(np.pi * np.minimum(t, ramp_time) / ramp_time)), 1.0)
+    return half_cosine(t / ramp_time) if ramp_time > 0 else np.ones_like(t)
 
 
 def applied_loads(spec: SlewingSpec, t) -> np.ndarray:
