@@ -26,7 +26,8 @@ from bearing_mbs.spec import SpecError
 from cases import SCENARIOS
 
 #: A shipped scenario of every registered model.
-BASES = {"bearing": "seed_hss_steady.toml", "balls": "seed_case5.toml", "slewing_bearing": "seed_slewing_pitch.toml"}
+BASES = {"bearing": "seed_hss_steady.toml", "balls": "seed_case5.toml", "slewing_bearing": "seed_slewing_pitch.toml",
+         "journal_bearing": "seed_hybrid_journal.toml"}
 EXAMPLES = 500
 
 scalars = st.one_of(

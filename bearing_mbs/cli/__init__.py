@@ -11,6 +11,7 @@
 ``bearing-mbs skidding SCENARIO.toml --out DIR [--loads ...] [--cages ...]`` (docs/skidding.md)
 ``bearing-mbs cage-models SCENARIO.toml --out DIR [--no-roller-guided]`` (docs/cage-models.md)
 ``bearing-mbs slewing SCENARIO.toml --out DIR`` (docs/slewing.md)
+``bearing-mbs journal SCENARIO.toml --out DIR`` (docs/fluid-film.md)
 
 Exit status (docs/status.md): 0 success; 3 suspect (a run reached its end but failed a check); 1 failed (a run
 stopped early; its summary and result are still written); 2 bad input (nothing runs); 130 or 143 interrupted by
@@ -24,7 +25,7 @@ import logging
 import sys
 
 from bearing_mbs._numba_cache import invalidate_if_stale
-from bearing_mbs.cli import runs, slewing, studies
+from bearing_mbs.cli import journal, runs, slewing, studies
 from bearing_mbs.cli.options import BAD_INPUT, exit_code, remove_created_output
 from bearing_mbs.core.interrupt import StopRequest, stop_on_signals
 from bearing_mbs.core.result import INTERRUPTED
@@ -34,7 +35,8 @@ from bearing_mbs.spec import SpecError
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="bearing-mbs", description=__doc__.splitlines()[0])
     commands = parser.add_subparsers(dest="command", required=True)
-    handlers = {**runs.register(commands), **studies.register(commands), **slewing.register(commands)}
+    handlers = {**runs.register(commands), **studies.register(commands), **slewing.register(commands),
+                **journal.register(commands)}
     args = parser.parse_args(argv)
     invalidate_if_stale()  # once per process, before anything compiles (never at import)
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")

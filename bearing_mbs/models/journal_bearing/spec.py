@@ -1,0 +1,114 @@
+"""A ``journal_bearing`` scenario: ``[scenario]`` (``model = "journal_bearing"``) and ``[journal]``, with an optional
+``[journal.recesses]`` table. ``bearing-mbs journal`` solves it statically (docs/fluid-film.md)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from bearing_mbs.fluid_film.reynolds import CAVITATION
+from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS
+from bearing_mbs.spec import Spec
+from bearing_mbs.spec.fields import in_range, non_negative, one_of, positive, require
+
+#: The ``[scenario] model`` value of a journal-bearing scenario.
+MODEL_NAME = "journal_bearing"
+
+#: What each restrictor needs besides the supply pressure.
+RESTRICTOR_KEYS = {"capillary": ("capillary_length", "capillary_diameter"), "orifice": ("orifice_diameter",),
+                   "constant_flow": ("flow",), "none": ()}
+
+
+@dataclass(frozen=True)
+class RecessSection:
+    """``[journal.recesses]``: count >= 1 recesses of angular_width [deg] (together less than 360°; one recess of
+    360° is a circumferential groove) by axial_length [m] (<= the bearing length), depth [m] > 0, the first
+    centred at first_angle [deg]; supply_pressure [Pa] >= 0 through a restrictor: ``capillary``
+    (capillary_length, capillary_diameter [m], at least 20 bores long), ``orifice`` (orifice_diameter [m],
+    discharge_coefficient in (0, 1]), ``constant_flow`` (flow [m³/s] per recess) or ``none`` (the recess is held at
+    the supply pressure: a supply groove)."""
+
+    count: int
+    angular_width: float
+    axial_length: float
+    depth: float
+    supply_pressure: float
+    restrictor: str = "capillary"
+    first_angle: float = 0.0
+    capillary_length: float | None = None
+    capillary_diameter: float | None = None
+    orifice_diameter: float | None = None
+    discharge_coefficient: float = 0.6
+    flow: float | None = None
+
+    def __post_init__(self):
+        require(isinstance(self.count, int) and self.count >= 1, "count", self.count, "an integer >= 1")
+        widest = 360.0 if self.count == 1 else 360.0 / self.count
+        in_range("angular_width", self.angular_width, 0.0, widest, low_open=True, high_open=self.count > 1)
+        positive("axial_length", self.axial_length)
+        positive("depth", self.depth)
+        non_negative("supply_pressure", self.supply_pressure)
+        one_of("restrictor", self.restrictor, tuple(RESTRICTORS))
+        in_range("first_angle", self.first_angle, -360.0, 360.0)
+        for name in RESTRICTOR_KEYS[self.restrictor]:
+            require(getattr(self, name) is not None, name, None, f"required by restrictor = {self.restrictor!r}")
+            positive(name, getattr(self, name))
+        in_range("discharge_coefficient", self.discharge_coefficient, 0.0, 1.0, low_open=True)
+        if self.restrictor == "capillary":
+            require(self.capillary_length >= CAPILLARY_MIN_ASPECT * self.capillary_diameter, "capillary_length",
+                    self.capillary_length, f">= {CAPILLARY_MIN_ASPECT:g} × capillary_diameter = "
+                    f"{CAPILLARY_MIN_ASPECT * self.capillary_diameter:g} m (laminar, developed flow)")
+
+
+@dataclass(frozen=True)
+class JournalSection:
+    """``[journal]``: diameter D [m] > 0 and length L [m] > 0 of the bore; radial_clearance C [m] in (0, D/2);
+    speed_rpm [rpm] of the journal (counter-clockwise positive; 0: hydrostatic); viscosity μ [Pa s] > 0; density
+    ρ [kg/m³] > 0; eccentricity_ratio ε = e/C in [0, 1) and attitude [deg], the direction of the journal centre's
+    displacement from +x (the first recess is centred at its first_angle), for the static solve; cavitation
+    ``gumbel`` (half-Sommerfeld) or ``jfo`` (mass-conserving); grid = [n_theta, n_z] cells, each >= 4."""
+
+    diameter: float
+    length: float
+    radial_clearance: float
+    viscosity: float
+    speed_rpm: float = 0.0
+    density: float = 860.0
+    eccentricity_ratio: float = 0.0
+    attitude: float = 0.0
+    cavitation: str = "gumbel"
+    grid: tuple[int, int] = (240, 60)
+    recesses: RecessSection | None = None
+
+    def __post_init__(self):
+        positive("diameter", self.diameter)
+        positive("length", self.length)
+        in_range("radial_clearance", self.radial_clearance, 0.0, self.diameter / 2, low_open=True, high_open=True)
+        positive("viscosity", self.viscosity)
+        in_range("speed_rpm", self.speed_rpm, -1e6, 1e6)
+        positive("density", self.density)
+        in_range("eccentricity_ratio", self.eccentricity_ratio, 0.0, 1.0, high_open=True)
+        in_range("attitude", self.attitude, -360.0, 360.0)
+        one_of("cavitation", self.cavitation, CAVITATION)
+        require(len(self.grid) == 2 and all(isinstance(n, int) and n >= 4 for n in self.grid), "grid",
+                list(self.grid), "[n_theta, n_z], integers >= 4")
+        if self.recesses is not None:
+            require(self.recesses.axial_length <= self.length, "recesses.axial_length", self.recesses.axial_length,
+                    f"<= length = {self.length:g} m")
+
+    @property
+    def speed(self) -> float:
+        """Ω [rad/s]."""
+        return self.speed_rpm * 2 * math.pi / 60
+
+
+@dataclass(frozen=True)
+class JournalSpec(Spec):
+    """A ``journal_bearing`` scenario."""
+
+    journal: JournalSection | None = None
+
+    def __post_init__(self):
+        super().__post_init__()
+        require(self.scenario.model == MODEL_NAME, "scenario.model", self.scenario.model, f"{MODEL_NAME!r}")
+        require(self.journal is not None, "journal", None, "a [journal] section")

@@ -1,0 +1,176 @@
+"""``bearing-mbs journal``: the static solution of a journal-bearing scenario, written as ``summary.json`` (SI units,
+its ``units`` map) and figures.
+
+At the scenario's eccentricity: load, attitude, flow, friction, recess pressures, the eight dynamic coefficients
+and the static stiffness ΔF/Δe (:mod:`bearing_mbs.fluid_film`); along the same direction, the load and static
+stiffness against eccentricity; for capillary recesses at zero speed with the eccentricity towards the first
+recess, document 001's resistance network beside the full solution.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from bearing_mbs.fluid_film.coefficients import PERTURBATION, dynamic_coefficients
+from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
+from bearing_mbs.fluid_film.network import network_recess_pressures
+from bearing_mbs.fluid_film.restrictors import (Capillary, ConstantFlow, DirectSupply, Orifice, capillary_resistance,
+                                                capillary_reynolds)
+from bearing_mbs.fluid_film.reynolds import FilmSolution, JournalState, Supply, solve_film
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.io.json import json_safe, rounded, write_json
+from bearing_mbs.models.journal_bearing.spec import JournalSpec
+
+SUMMARY_FILE = "summary.json"
+#: Eccentricity ratios of the load curve.
+CURVE_ECCENTRICITIES = (0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9)
+#: Laminar bounds checked after the solve: capillary Re = 4ρq/(πμd) (Rowe 2012) and the film's Taylor number
+#: Ta = ρΩRC/μ · sqrt(C/R) < 41.3 (Taylor vortices; Hamrock, Schmid & Jacobson 2004, ch. 3).
+CAPILLARY_REYNOLDS_LIMIT, TAYLOR_LIMIT = 2000.0, 41.3
+UNITS = {"load_capacity": "N", "force": "N", "attitude_angle": "deg", "flow": "m^3/s", "friction_torque": "N m",
+         "friction_power": "W", "recess_pressures": "Pa", "recess_flows": "m^3/s", "stiffness": "N/m",
+         "damping": "N s/m", "static_stiffness": "N/m", "static_stiffness_per_eccentricity_ratio": "N",
+         "min_film_thickness": "m", "max_pressure": "Pa", "load_curve": "-, N, N/m",
+         "network_recess_pressures": "Pa", "network_difference": "-", "mass_balance_error": "-",
+         "recess_areas": "m^2", "capillary_reynolds": "-", "taylor_number": "-"}
+
+
+def bearing_of(spec: JournalSpec) -> tuple[JournalBearing, Supply | None]:
+    j, r = spec.journal, spec.journal.recesses
+    recesses = None if r is None else Recesses(r.count, r.angular_width, r.axial_length, r.depth, r.first_angle)
+    bearing = JournalBearing(j.diameter, j.length, j.radial_clearance, j.viscosity, j.density, recesses)
+    if r is None:
+        return bearing, None
+    restrictor = {"capillary": lambda: Capillary(r.capillary_length, r.capillary_diameter),
+                  "orifice": lambda: Orifice(r.orifice_diameter, r.discharge_coefficient),
+                  "constant_flow": lambda: ConstantFlow(r.flow), "none": DirectSupply}[r.restrictor]()
+    return bearing, Supply(r.supply_pressure, restrictor)
+
+
+def state_at(spec: JournalSpec, eccentricity_ratio: float) -> JournalState:
+    j = spec.journal
+    e, angle = eccentricity_ratio * j.radial_clearance, math.radians(j.attitude)
+    return JournalState((e * math.cos(angle), e * math.sin(angle)), (0.0, 0.0), j.speed)
+
+
+def static_stiffness(solve, state: JournalState, clearance: float) -> float:
+    """ΔF/Δe [N/m]: minus the slope of the film force along the displacement's direction (x if centred)."""
+    e = np.asarray(state.eccentricity)
+    direction = e / np.linalg.norm(e) if np.any(e) else np.array([1.0, 0.0])
+    step = PERTURBATION * clearance
+    plus = solve(replace(state, eccentricity=tuple(e + step * direction))).force
+    minus = solve(replace(state, eccentricity=tuple(e - step * direction))).force
+    return float(-direction @ (plus - minus) / (2 * step))
+
+
+def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
+    j = spec.journal
+    bearing, supply = bearing_of(spec)
+    grid = FilmGrid.build(bearing, *j.grid)
+
+    def solve(state):
+        return solve_film(bearing, state, supply, grid, j.cavitation)
+
+    state = state_at(spec, j.eccentricity_ratio)
+    film = solve(state)
+    stiffness, damping = dynamic_coefficients(lambda s: solve(s).force, state, j.radial_clearance)
+    curve = [(eps, solve(state_at(spec, eps)).load_capacity, static_stiffness(solve, state_at(spec, eps),
+                                                                            j.radial_clearance))
+             for eps in CURVE_ECCENTRICITIES]
+    stiff = static_stiffness(solve, state, j.radial_clearance)
+    h_min = float(grid.land_film(grid.theta, state.eccentricity).min())
+    summary = {
+        "scenario": spec.scenario.name, "model": spec.scenario.model, "cavitation": j.cavitation,
+        "grid": list(j.grid), "eccentricity_ratio": j.eccentricity_ratio, "speed_rpm": j.speed_rpm,
+        "load_capacity": film.load_capacity, "force": film.force.tolist(), "attitude_angle": film.attitude_angle,
+        "flow": film.supply_flow if supply is not None else film.edge_outflow,
+        "friction_torque": film.friction_torque, "friction_power": film.friction_power,
+        "recess_pressures": film.recess_pressures.tolist(), "recess_flows": film.supply_flows.tolist(),
+        "recess_areas": grid.recess_areas.tolist(),
+        "stiffness": stiffness.tolist(), "damping": damping.tolist(), "static_stiffness": stiff,
+        "static_stiffness_per_eccentricity_ratio": stiff * j.radial_clearance,
+        "min_film_thickness": h_min, "max_pressure": float(film.load_pressure.max()),
+        "mass_balance_error": abs(film.supply_flow - film.edge_outflow - film.volume_rate)
+        / max(abs(film.edge_outflow), 1e-300),
+        "load_curve": [list(row) for row in curve],
+    }
+    summary.update(_laminar_checks(spec, film, supply))
+    summary.update(_network(spec, bearing, supply, film))
+    summary["units"] = {key: unit for key, unit in UNITS.items() if key in summary}
+    return rounded(json_safe(summary)), film, curve
+
+
+def _laminar_checks(spec, film, supply) -> dict:
+    j = spec.journal
+    taylor = j.density * abs(j.speed) * j.diameter / 2 * j.radial_clearance / j.viscosity \
+        * math.sqrt(2 * j.radial_clearance / j.diameter)
+    found = {"taylor_number": taylor}
+    warnings = []
+    if taylor > TAYLOR_LIMIT:
+        warnings.append(f"taylor_number = {taylor:.3g} > {TAYLOR_LIMIT}: Taylor vortices, the laminar film model "
+                        "does not hold")
+    if supply is not None and isinstance(supply.restrictor, Capillary):
+        reynolds = max(capillary_reynolds(q, supply.restrictor.diameter, j.viscosity, j.density)
+                       for q in film.supply_flows)
+        found["capillary_reynolds"] = reynolds
+        if reynolds > CAPILLARY_REYNOLDS_LIMIT:
+            warnings.append(f"capillary_reynolds = {reynolds:.3g} > {CAPILLARY_REYNOLDS_LIMIT:g}: the capillary "
+                            "is not laminar; its resistance law does not hold")
+    found["warnings"] = warnings
+    return found
+
+
+def _network(spec, bearing, supply, film) -> dict:
+    j, r = spec.journal, spec.journal.recesses
+    aligned = j.eccentricity_ratio == 0 or math.isclose((j.attitude - r.first_angle) % 360, 0, abs_tol=1e-9) \
+        if r is not None else False
+    if not (aligned and isinstance(getattr(supply, "restrictor", None), Capillary) and j.speed == 0 and r.count > 1):
+        return {}
+    resistance = capillary_resistance(supply.restrictor.length, supply.restrictor.diameter, j.viscosity)
+    pressures, _ = network_recess_pressures(bearing, j.eccentricity_ratio, supply.pressure, resistance)
+    return {"network_recess_pressures": pressures.tolist(),
+            "network_difference": float(np.max(np.abs(pressures / film.recess_pressures - 1)))}
+
+
+def write_journal(spec: JournalSpec, directory: str | Path, figures: bool = True) -> dict:
+    """Solve the scenario and write ``summary.json`` (and the figures) to ``directory``."""
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    summary, film, curve = journal_summary(spec)
+    write_json(directory / SUMMARY_FILE, summary)
+    if figures:
+        _plot_pressure(spec, film, directory / "pressure_map.png")
+        _plot_curve(spec, curve, directory / "load_curve.png")
+    return summary
+
+
+def _plot_pressure(spec, film, path):
+    figure, axis = new_figure(figsize=(8, 4))
+    grid = film.grid
+    image = axis.pcolormesh(np.degrees(grid.theta), grid.z * 1e3, film.load_pressure.T / 1e6, shading="nearest",
+                            cmap="viridis")
+    figure.colorbar(image, ax=axis, label="pressure [MPa]")
+    axis.set_xlabel("θ [deg] (from +x)")
+    axis.set_ylabel("z [mm]")
+    axis.set_title(f"{spec.scenario.name}: ε = {spec.journal.eccentricity_ratio:g}, "
+                   f"{spec.journal.speed_rpm:g} rpm, {film.cavitation}")
+    return save_figure(figure, path)
+
+
+def _plot_curve(spec, curve, path):
+    eps, load, stiffness = np.array(curve).T
+    figure, (loads, stiff) = new_figure(2, 1, figsize=(7, 6), sharex=True)
+    loads.plot(eps, load, "o-")
+    loads.set_ylabel("load capacity [N]")
+    stiff.plot(eps, stiffness / 1e6, "o-")
+    stiff.set_ylabel("static stiffness ΔF/Δe [N/µm]")
+    stiff.set_xlabel("eccentricity ratio ε")
+    for axis in (loads, stiff):
+        axis.grid(True, alpha=0.3)
+    loads.set_title(f"{spec.scenario.name}: C = {spec.journal.radial_clearance * 1e6:g} µm, "
+                    f"{spec.journal.speed_rpm:g} rpm")
+    return save_figure(figure, path)
