@@ -4,7 +4,13 @@
   (the issue's target: ≤ 20 ms on the 2-core machine);
 * ``static_solve_240x60``: the same on the command's default grid;
 * ``static_solve_jfo_1000rpm``: the same bearing at 1000 rpm with mass-conserving cavitation (active set);
-* ``short_bearing_force``: one call of the dynamic short-bearing closed form from Python (numpy).
+* ``short_bearing_force``: one call of the dynamic short-bearing closed form from Python (numpy);
+* ``film_force_<source>``: one evaluation of the rotor scene's forces (the compiled kernel, journal bearings, servo
+  and unbalance) with the ``short`` and ``map`` film forces (target ≤ 5 µs);
+* ``whirl_second_<source>_<engine>``: wall time per simulated second of ``seed_rotor_whirl.toml`` (constant
+  11 000 rpm, 0.5 s run), for each force source on each engine, and ``whirl_second_reynolds``: the same with a
+  Reynolds solve (60 × 16 cells) per force evaluation (:mod:`bearing_mbs.models.rotor.reynolds_reference`,
+  measured over 0.01 s).
 Ratios are to the 120 × 30 solve in the same run.
 """
 
@@ -17,7 +23,15 @@ from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.restrictors import Capillary
 from bearing_mbs.fluid_film.reynolds import JournalState, Supply, solve_film
 
-from common import best_of, write
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
+from bearing_mbs.elements import pack_scene, scene_forces
+from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene, load_spec
+from bearing_mbs.models.rotor.reynolds_reference import reynolds_orbit
+
+from common import SCENARIOS, best_of, write
+
+import numpy as np
 
 BEARING = JournalBearing(0.075, 0.075, 35e-6, 0.028, 860.0, Recesses(4, 45.0, 0.060, 0.001))
 SUPPLY = Supply(1e6, Capillary(0.020, 0.0006))
@@ -34,7 +48,23 @@ def main() -> dict:
         figures[name] = best_of(lambda: solve_film(BEARING, state, SUPPLY, film_grid, cavitation))
     calls = 2000
     figures["short_bearing_force"] = best_of(lambda: [short_bearing_force(
-        (17.5e-6, 3e-6), (1e-4, -2e-4), 104.7, 0.0375, 0.0075, 35e-6, 0.028) for _ in range(calls)]) / calls
+        17.5e-6, 3e-6, 1e-4, -2e-4, 104.7, 0.0375, 0.0075, 35e-6, 0.028) for _ in range(calls)]) / calls
+    whirl = ["drive.speed_rpm=11000", "drive.start_rpm=11000", "drive.ramp_time=0", "scenario.end_time=0.5"]
+    for source in ("short", "map"):
+        spec = load_spec(SCENARIOS / "seed_rotor_whirl.toml", whirl + [f"bearing.force={source}"])
+        packed = pack_scene(build_scene(spec))
+        q, v = np.array([12e-6, -10e-6, 0.3]), np.array([1e-3, -2e-3, 1100.0])
+        forces, outputs = np.zeros(3), np.zeros((0, N_PAIR_OUTPUTS))
+        figures[f"film_force_{source}"] = best_of(lambda: [scene_forces(packed, 0.0, q, v, np.zeros(0), forces,
+                                                                        outputs) for _ in range(calls)]) / calls
+        for engine in ("exudyn", "reference"):
+            run = load_spec(SCENARIOS / "seed_rotor_whirl.toml", whirl + [f"bearing.force={source}",
+                                                                           f"solver.engine={engine}"])
+            scene = build_scene(run)
+            simulate(scene, run.solver, 0.01)  # warm-up: compilation and caches
+            figures[f"whirl_second_{source}_{engine}"] = simulate(scene, run.solver, 0.5).stats.wall_time_s / 0.5
+    spec = load_spec(SCENARIOS / "seed_rotor_whirl.toml", whirl + ["bearing.grid=[60, 16]"])
+    figures["whirl_second_reynolds"] = reynolds_orbit(spec, np.linspace(0, 0.01, 11)).wall_time_s / 0.01
     ratios = {name: value / figures["static_solve_120x30"] for name, value in figures.items()}
     return write("journal", {"seconds": figures, "ratio_to_static_solve_120x30": ratios})
 

@@ -58,7 +58,7 @@ ROLLER_GUIDED = "bearing.cage_guidance=rollers"
     ],
 )
 def test_each_scene_builds_only_what_it_needs(overrides, counts):
-    assert scene_counts(scene_of(*overrides)) == {**counts, "slewing_bearings": 0}
+    assert scene_counts(scene_of(*overrides)) == {**counts, "slewing_bearings": 0, "journal_bearings": 0, "unbalances": 0}
 
 
 def test_full_complement_has_no_cage_and_neighbour_pairs_only():

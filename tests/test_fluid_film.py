@@ -173,8 +173,8 @@ def test_short_bearing_coefficients_match_the_closed_form():
         return solve_film(bearing, s, grid=(240, 20)).force
 
     def closed(s):
-        return closed_forms.short_bearing_force(s.eccentricity, s.eccentricity_rate, s.speed, D / 2, length,
-                                                clearance, MU)
+        return np.array(closed_forms.short_bearing_force(*s.eccentricity, *s.eccentricity_rate, s.speed, D / 2,
+                                                         length, clearance, MU))
 
     stiffness, damping = dynamic_coefficients(solver, state, clearance)
     stiffness_0, damping_0 = dynamic_coefficients(closed, state, clearance)
@@ -187,7 +187,7 @@ def test_short_bearing_coefficients_match_the_closed_form():
 
 def test_dynamic_short_bearing_reduces_to_the_steady_closed_form():
     """With no squeeze velocity the quadrature of the dynamic short bearing equals the steady closed form (1e-9)."""
-    force = closed_forms.short_bearing_force((0.0, 0.6 * 35e-6), (0.0, 0.0), OMEGA, D / 2, 0.01, 35e-6, MU)
+    force = closed_forms.short_bearing_force(0.0, 0.6 * 35e-6, 0.0, 0.0, OMEGA, D / 2, 0.01, 35e-6, MU)
     f_n, f_t = closed_forms.short_bearing_components(0.6, OMEGA, D / 2, 0.01, 35e-6, MU)
     np.testing.assert_allclose(force, [-f_t, f_n], rtol=1e-9)
 

@@ -7,16 +7,18 @@ from __future__ import annotations
 import numba
 
 from bearing_mbs.core.force_element import ForceElementRegistry
-from bearing_mbs.elements import contact_pairs, drags, loads, servos, slewing_bearings
+from bearing_mbs.elements import contact_pairs, drags, journal_bearings, loads, servos, slewing_bearings, unbalances
 
-#: Contact pairs first (their per-pair state and outputs), then loads, drives, drags and slewing bearings.
-BUILT_IN = (contact_pairs.ELEMENT, loads.ELEMENT, servos.ELEMENT, drags.ELEMENT, slewing_bearings.ELEMENT)
+#: Contact pairs first (their per-pair state and outputs), then loads, drives, drags, slewing bearings, journal
+#: bearings and unbalances.
+BUILT_IN = (contact_pairs.ELEMENT, loads.ELEMENT, servos.ELEMENT, drags.ELEMENT, slewing_bearings.ELEMENT,
+            journal_bearings.ELEMENT, unbalances.ELEMENT)
 FORCE_ELEMENTS = ForceElementRegistry(BUILT_IN)
 
 
 @numba.njit(cache=True, inline="always")
 def add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, complete):
-    """The compiled forces of the built-in kinds, ``elements[0:5]`` in the order of :data:`BUILT_IN`.
+    """The compiled forces of the built-in kinds, ``elements[0:7]`` in the order of :data:`BUILT_IN`.
 
     Written out call by call: numba cannot loop over a tuple of different types, and a generic unrolling
     (:func:`bearing_mbs.elements.assembly.add_element_forces`, used for kinds registered from outside) costs
@@ -27,3 +29,5 @@ def add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, com
     servos.add_forces(elements[2], t, q, v, latched, forces, pair_out, power, complete)
     drags.add_forces(elements[3], t, q, v, latched, forces, pair_out, power, complete)
     slewing_bearings.add_forces(elements[4], t, q, v, latched, forces, pair_out, power, complete)
+    journal_bearings.add_forces(elements[5], t, q, v, latched, forces, pair_out, power, complete)
+    unbalances.add_forces(elements[6], t, q, v, latched, forces, pair_out, power, complete)

@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba.extending import register_jitable
 
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(48)
 
@@ -71,28 +72,35 @@ def sommerfeld_number(load: float, speed: float, radius: float, length: float, c
     return (radius / clearance) ** 2 * viscosity * (speed / (2 * math.pi)) / (load / (2 * radius * length))
 
 
-def short_bearing_force(eccentricity, eccentricity_rate, speed: float, radius: float, length: float,
-                        clearance: float, viscosity: float) -> np.ndarray:
-    """Film force (F_x, F_y) [N] on a journal at (e_x, e_y) [m] moving at (ė_x, ė_y) [m/s], turning at Ω [rad/s]."""
-    e_x, e_y = eccentricity
-    v_x, v_y = eccentricity_rate
-    e = math.hypot(e_x, e_y)
-    if e == 0.0:
-        direction = np.array([v_x, v_y]) / max(math.hypot(v_x, v_y), 1e-300)
-        e_x, e_y = 1e-12 * clearance * direction if math.hypot(v_x, v_y) else (1e-12 * clearance, 0.0)
-        e = math.hypot(e_x, e_y)
-    n = np.array([e_x, e_y]) / e
-    t = np.array([-n[1], n[0]])
+@register_jitable
+def short_bearing_force(e_x, e_y, v_x, v_y, speed, radius, length, clearance, viscosity):
+    """Film force (F_x, F_y) [N] on a journal at (e_x, e_y) [m] moving at (v_x, v_y) [m/s], turning at Ω [rad/s]
+    (a tuple; numba-compilable, so the force element and this library share it)."""
+    e = math.sqrt(e_x * e_x + e_y * e_y)
+    floor = 1e-12 * clearance
+    if e < floor:  # centred: the direction of the line of centres is arbitrary, the force vanishes with e
+        e_x, e_y, e = floor, 0.0, floor
+    n_x, n_y = e_x / e, e_y / e
     eps = e / clearance
-    eps_rate = (v_x * n[0] + v_y * n[1]) / clearance
-    psi_rate = (v_y * n[0] - v_x * n[1]) / e
+    eps_rate = (v_x * n_x + v_y * n_y) / clearance
+    psi_rate = (v_y * n_x - v_x * n_y) / e
     # the bracket A cos α − B sin α = M cos(α + β) is positive on (−π/2 − β, π/2 − β)
-    a_coef, b_coef = 2 * eps_rate, eps * (speed - 2 * psi_rate)
+    a_coef, b_coef = 2.0 * eps_rate, eps * (speed - 2.0 * psi_rate)
     beta = math.atan2(b_coef, a_coef)
-    alpha = -beta + _NODES * math.pi / 2
-    bracket = a_coef * np.cos(alpha) - b_coef * np.sin(alpha)
-    profile = np.maximum(bracket, 0.0) / (1 - eps * np.cos(alpha)) ** 3
-    scale = viscosity * radius * length**3 / (2 * clearance**2) * (math.pi / 2)
-    f_n = -scale * np.dot(_WEIGHTS, profile * np.cos(alpha))
-    f_t = -scale * np.dot(_WEIGHTS, profile * np.sin(alpha))
-    return f_n * n + f_t * t
+    f_n, f_t = 0.0, 0.0
+    for k in range(_NODES.size):
+        alpha = -beta + _NODES[k] * math.pi / 2
+        bracket = a_coef * math.cos(alpha) - b_coef * math.sin(alpha)
+        profile = _WEIGHTS[k] * max(bracket, 0.0) / (1.0 - eps * math.cos(alpha)) ** 3
+        f_n += profile * math.cos(alpha)
+        f_t += profile * math.sin(alpha)
+    scale = -viscosity * radius * length**3 / (2.0 * clearance**2) * (math.pi / 2)
+    f_n, f_t = scale * f_n, scale * f_t
+    return f_n * n_x - f_t * n_y, f_n * n_y + f_t * n_x
+
+
+@register_jitable
+def short_bearing_torque(eccentricity_ratio, speed, radius, length, clearance, viscosity):
+    r"""Viscous torque [N m] on the journal about its axis (opposing Ω): the Couette shear μΩR/h over the full
+    film, :math:`-2\pi\mu\Omega R^3 L/(C\sqrt{1-\varepsilon^2})` (Petroff's at ε = 0)."""
+    return -2.0 * math.pi * viscosity * speed * radius**3 * length / (clearance * math.sqrt(1.0 - eccentricity_ratio**2))

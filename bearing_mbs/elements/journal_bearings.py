@@ -1,0 +1,142 @@
+r"""Journal bearings as a force element: the oil film between a body (the journal) and the ground (the bearing).
+
+The body's position (x, y) relative to the bearing's ``centre`` is the journal's eccentricity, its velocity the
+squeeze velocity and its angular velocity the journal speed Ω. The film force comes from
+:mod:`bearing_mbs.fluid_film` (one source of each formula, compiled here):
+
+* ``short`` — Ocvirk's dynamic short bearing with Gümbel's condition (:func:`~bearing_mbs.fluid_film.closed_forms.
+  short_bearing_force`);
+* ``map`` — a finite bearing's Reynolds solution, tabulated (:mod:`bearing_mbs.fluid_film.force_map`).
+
+``count`` identical bearings act together (a rigid rotor on two bearings in its cylindrical mode). The journal also
+feels the Couette torque of the full film, :math:`-2\pi\mu\Omega R^3 L/(C\sqrt{1-\varepsilon^2})` per bearing. The
+film stores no energy: the power it takes from the bodies is dissipated, ``power[1] -= F·v + TΩ``. An eccentricity
+at or beyond the clearance (metal contact, outside the film model) is evaluated at ε = :data:`LARGEST_ECCENTRICITY`;
+the rotor model warns well before.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import numba
+import numpy as np
+
+from bearing_mbs.core.force_element import ForceElement
+from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
+from bearing_mbs.fluid_film.force_map import map_force
+
+#: Force sources by their integer code.
+SOURCES = ("short", "map")
+#: The largest eccentricity ratio the film is evaluated at.
+LARGEST_ECCENTRICITY = 0.999
+
+
+@dataclass(frozen=True)
+class JournalFilm:
+    """``count`` identical journal bearings between the ground and ``body``: radius R, length L, radial clearance C [m],
+    viscosity μ [Pa s], centre (x, y) [m] of the bore; ``source`` ``short`` or ``map`` (then ``map_normal`` and
+    ``map_tangential``, tables of :class:`~bearing_mbs.fluid_film.force_map.ForceMap`, and ``map_step`` its ε
+    step)."""
+
+    name: str
+    body: int
+    count: int
+    radius: float
+    length: float
+    clearance: float
+    viscosity: float
+    centre: tuple[float, float] = (0.0, 0.0)
+    source: str = "short"
+    map_normal: np.ndarray = field(default_factory=lambda: np.zeros((2, 1)), compare=False)
+    map_tangential: np.ndarray = field(default_factory=lambda: np.zeros((2, 1)), compare=False)
+    map_step: float = 1.0
+
+
+class JournalFilmArrays(NamedTuple):
+    body: np.ndarray  # (J,) int64
+    count: np.ndarray  # (J,) float
+    geometry: np.ndarray  # (J, 4): R, L, C [m], μ [Pa s]
+    centre: np.ndarray  # (J, 2) [m]
+    source: np.ndarray  # (J,) int64, index into SOURCES
+    map_shape: np.ndarray  # (J, 2) int64: rows, columns of each item's tables
+    map_step: np.ndarray  # (J,)
+    map_normal: np.ndarray  # (J, rows, columns), zero-padded
+    map_tangential: np.ndarray  # (J, rows, columns)
+
+
+def pack(films) -> JournalFilmArrays:
+    shapes = np.array([f.map_normal.shape for f in films], dtype=np.int64).reshape(-1, 2)
+    rows, columns = shapes.max(axis=0) if len(films) else (1, 1)
+    normal, tangential = np.zeros((len(films), rows, columns)), np.zeros((len(films), rows, columns))
+    for j, f in enumerate(films):
+        normal[j, : shapes[j, 0], : shapes[j, 1]] = f.map_normal
+        tangential[j, : shapes[j, 0], : shapes[j, 1]] = f.map_tangential
+    return JournalFilmArrays(
+        body=np.array([f.body for f in films], dtype=np.int64),
+        count=np.array([f.count for f in films], dtype=float),
+        geometry=np.array([[f.radius, f.length, f.clearance, f.viscosity] for f in films], dtype=float).reshape(-1, 4),
+        centre=np.array([f.centre for f in films], dtype=float).reshape(-1, 2),
+        source=np.array([SOURCES.index(f.source) for f in films], dtype=np.int64),
+        map_shape=shapes, map_step=np.array([f.map_step for f in films], dtype=float),
+        map_normal=normal, map_tangential=tangential)
+
+
+@numba.njit(cache=True)
+def film_load(films, j, q, v):
+    """(F_x, F_y, T) [N, N, N m] of item j on its body."""
+    i = 3 * films.body[j]
+    radius, length, clearance, viscosity = films.geometry[j, 0], films.geometry[j, 1], films.geometry[j, 2], \
+        films.geometry[j, 3]
+    e_x, e_y = q[i] - films.centre[j, 0], q[i + 1] - films.centre[j, 1]
+    eps = math.sqrt(e_x * e_x + e_y * e_y) / clearance
+    if eps > LARGEST_ECCENTRICITY:
+        e_x, e_y, eps = e_x * LARGEST_ECCENTRICITY / eps, e_y * LARGEST_ECCENTRICITY / eps, LARGEST_ECCENTRICITY
+    speed = v[i + 2]
+    if films.source[j] == 0:
+        f_x, f_y = short_bearing_force(e_x, e_y, v[i], v[i + 1], speed, radius, length, clearance, viscosity)
+    else:
+        rows, columns = films.map_shape[j, 0], films.map_shape[j, 1]
+        f_x, f_y = map_force(films.map_normal[j, :rows, :columns], films.map_tangential[j, :rows, :columns],
+                             films.map_step[j], e_x, e_y, v[i], v[i + 1], speed, clearance)
+    torque = short_bearing_torque(eps, speed, radius, length, clearance, viscosity)
+    return films.count[j] * f_x, films.count[j] * f_y, films.count[j] * torque
+
+
+@numba.njit(cache=True, inline="always")
+def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    films = parameters
+    for j in range(films.body.size):
+        f_x, f_y, torque = film_load(films, j, q, v)
+        i = 3 * films.body[j]
+        forces[i] += f_x
+        forces[i + 1] += f_y
+        forces[i + 2] += torque
+        power[1] -= f_x * v[i] + f_y * v[i + 1] + torque * v[i + 2]
+
+
+def add_forces_twin(films, t, q, v, latched, forces, pair_out, power, complete):
+    """The same forces through the library's functions called from Python (no compiled kernel)."""
+    for j, body in enumerate(films.body):
+        radius, length, clearance, viscosity = films.geometry[j]
+        e = q[3 * body : 3 * body + 2] - films.centre[j]
+        eps = float(np.hypot(*e)) / clearance
+        if eps > LARGEST_ECCENTRICITY:
+            e, eps = e * LARGEST_ECCENTRICITY / eps, LARGEST_ECCENTRICITY
+        velocity, speed = v[3 * body : 3 * body + 2], v[3 * body + 2]
+        if SOURCES[films.source[j]] == "short":
+            force = short_bearing_force(*e, *velocity, speed, radius, length, clearance, viscosity)
+        else:
+            rows, columns = films.map_shape[j]
+            force = map_force(films.map_normal[j, :rows, :columns], films.map_tangential[j, :rows, :columns],
+                                      films.map_step[j], *e, *velocity, speed, clearance)
+        torque = short_bearing_torque(eps, speed, radius, length, clearance, viscosity)
+        load = films.count[j] * np.array([*force, torque])
+        forces[3 * body : 3 * body + 3] += load
+        power[1] -= load @ v[3 * body : 3 * body + 3]
+
+
+ELEMENT = ForceElement(name="journal_bearings", item_type=JournalFilm, parameters=JournalFilmArrays, pack=pack,
+                       add_forces=add_forces, add_forces_twin=add_forces_twin)

@@ -1,0 +1,120 @@
+"""What a rotor run tells: its orbit, eccentricity, whirl growth and frequency, against the linearised rotor."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+from scipy.signal import find_peaks
+
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.models.rotor.build import equilibrium, map_error, whirl_threshold
+from bearing_mbs.models.rotor.spec import RotorSpec
+
+#: Largest eccentricity ratio a film model is trusted at (beyond: metal contact is near).
+FILM_COLLAPSE = 0.95
+#: Orbits below this fraction of the clearance count as small (linear) motion for the growth rate.
+LINEAR_ORBIT = 0.1
+
+UNITS = {"equilibrium_eccentricity_ratio": "-", "mean_eccentricity_ratio": "-", "max_eccentricity_ratio": "-",
+         "orbit_radius": "m", "orbit_amplitude": "m, m", "whirl_growth_rate": "1/s", "whirl_frequency_ratio": "-",
+         "linear_whirl_threshold_rpm": "rpm", "whirl_onset_rpm": "rpm",
+         "map_interpolation_error": "-"}
+
+
+def _journal(spec: RotorSpec, result):
+    index = 3 * int(result.topology.body("rotor"))
+    return result.position[:, index : index + 2], result.velocity[:, index + 2]
+
+
+def whirl_growth_rate(time, distance, clearance: float) -> float | None:
+    """The slope [1/s] of log(distance) through its successive maxima after the first fifth of the run, while the
+    motion is small (below :data:`LINEAR_ORBIT` of the clearance): at constant speed, the growth (> 0) or decay of
+    the least damped mode. None with fewer than three such maxima."""
+    peaks, _ = find_peaks(distance)
+    peaks = peaks[(distance[peaks] > 0) & (distance[peaks] < LINEAR_ORBIT * clearance)
+                  & (time[peaks] >= time[0] + (time[-1] - time[0]) / 5)]
+    if peaks.size < 3:
+        return None
+    return float(np.polyfit(time[peaks], np.log(distance[peaks]), 1)[0])
+
+
+def _dominant_ratio(frequencies, spectrum, spin_frequency) -> float | None:
+    """The strongest frequency of the orbit above a tenth of the spin frequency (the slow drift of a sweep's
+    equilibrium left out), as a fraction of the spin frequency: ≈ 1 for unbalance, ≈ 0.5 for oil whirl."""
+    band = frequencies > spin_frequency / 10
+    if spin_frequency <= 0 or not band.any():
+        return None
+    return float(frequencies[band][np.argmax(spectrum[band])] / spin_frequency)
+
+
+def whirl_onset(spec: RotorSpec, time, centre, spin, samples: int = 24) -> float | None:
+    """The speed [rpm] at which the journal first strays more than :data:`LINEAR_ORBIT` of the clearance from its
+    equilibrium at the current speed (interpolated between ``samples`` speeds), or None if it never does."""
+    speeds = np.linspace(spin.min(), spin.max(), samples)
+    if speeds[-1] <= speeds[0]:
+        return None
+    points = np.array([equilibrium(spec, s) for s in speeds])
+    current = np.stack([np.interp(spin, speeds, points[:, k]) for k in range(2)], axis=1)
+    strayed = np.flatnonzero(np.hypot(*(centre - current).T) > LINEAR_ORBIT * spec.bearing.radial_clearance)
+    return float(spin[strayed[0]] * 30 / math.pi) if strayed.size else None
+
+
+def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
+    centre, spin = _journal(spec, result)
+    clearance = spec.bearing.radial_clearance
+    window = result.time >= result.time[-1] / 2
+    final = equilibrium(spec, spec.drive.speed_rpm * math.pi / 30)
+    orbit = centre[window] - centre[window].mean(axis=0)
+    ratio = np.hypot(*centre.T) / clearance
+    motion = orbit[:, 0] - orbit[:, 0].mean()
+    frequencies = np.fft.rfftfreq(motion.size, d=float(np.mean(np.diff(result.time[window]))))
+    spectrum = np.abs(np.fft.rfft(motion * np.hanning(motion.size)))
+    spin_frequency = float(np.mean(spin[window])) / (2 * math.pi)
+    summary = {
+        "equilibrium_eccentricity_ratio": float(np.hypot(*final) / clearance),
+        "mean_eccentricity_ratio": float(np.hypot(*centre[window].mean(axis=0)) / clearance),
+        "max_eccentricity_ratio": float(ratio.max()),
+        "orbit_radius": float(np.hypot(*orbit.T).max()),
+        "orbit_amplitude": (np.ptp(orbit, axis=0) / 2).tolist(),
+        "whirl_growth_rate": whirl_growth_rate(result.time, np.hypot(*(centre - final).T), clearance),
+        "whirl_frequency_ratio": _dominant_ratio(frequencies, spectrum, spin_frequency),
+        "linear_whirl_threshold_rpm": whirl_threshold(spec),
+    }
+    if spec.drive.ramp_time > 0:
+        summary["whirl_onset_rpm"] = whirl_onset(spec, result.time, centre, spin)
+    if spec.bearing.force == "map":
+        summary["map_interpolation_error"] = map_error(spec)
+    return summary
+
+
+def rotor_warnings(spec: RotorSpec, scene, result) -> list[str]:
+    centre, _ = _journal(spec, result)
+    largest = float((np.hypot(*centre.T) / spec.bearing.radial_clearance).max())
+    if largest > FILM_COLLAPSE:
+        return [f"max_eccentricity_ratio = {largest:.3f} > {FILM_COLLAPSE}: the film has nearly collapsed (metal "
+                "contact); the film model does not hold there. A smaller load, a higher speed or a more viscous oil "
+                "keeps the journal off the wall"]
+    return []
+
+
+def rotor_figures(spec: RotorSpec, scene, result, directory) -> list[Path]:
+    centre, spin = _journal(spec, result)
+    clearance = spec.bearing.radial_clearance
+    figure, (orbit, history) = new_figure(1, 2, figsize=(11, 4.5))
+    circle = np.linspace(0, 2 * math.pi, 200)
+    orbit.plot(clearance * 1e6 * np.cos(circle), clearance * 1e6 * np.sin(circle), "k-", lw=0.8, label="clearance")
+    orbit.plot(centre[:, 0] * 1e6, centre[:, 1] * 1e6, lw=0.7, label="journal centre")
+    orbit.set_aspect("equal")
+    orbit.set_xlabel("x [µm]")
+    orbit.set_ylabel("y [µm]")
+    orbit.legend(loc="upper right")
+    history.plot(result.time, np.hypot(*centre.T) / clearance, label="eccentricity ratio")
+    speed = history.twinx()
+    speed.plot(result.time, spin * 30 / math.pi, "C1", lw=0.8)
+    speed.set_ylabel("speed [rpm]", color="C1")
+    history.set_xlabel("time [s]")
+    history.set_ylabel("ε")
+    figure.suptitle(f"{spec.scenario.name}: {spec.bearing.force} film force")
+    return [save_figure(figure, Path(directory) / "orbit.png")]
