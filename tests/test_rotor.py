@@ -138,3 +138,16 @@ def test_run_on_the_force_map_follows_the_full_reynolds_solution():
     reference = reynolds_orbit(spec, result.time)
     radius = np.hypot(*(reference.centre - reference.centre.mean(axis=0)).T).max()
     assert np.hypot(*(result.position[:, :2] - reference.centre).T).max() < 0.02 * radius
+
+
+def test_spin_up_lifts_the_journal_on_both_engines():
+    """From 300 rpm (a thin film low in the clearance) to 6000 rpm: the journal lifts to its running position, the
+    mean of the last half within 5 % of the 6000 rpm equilibrium (the unbalance orbit is about it), and the engines
+    agree on that mean within 1 %."""
+    means = []
+    for engine in ("exudyn", "reference"):
+        _, _, metrics = _metrics(SCENARIOS / "seed_rotor_spinup.toml", f"solver.engine={engine}")
+        assert metrics["max_eccentricity_ratio"] > 0.8
+        assert metrics["mean_eccentricity_ratio"] == pytest.approx(metrics["equilibrium_eccentricity_ratio"], rel=0.05)
+        means.append(metrics["mean_eccentricity_ratio"])
+    assert means[0] == pytest.approx(means[1], rel=0.01)

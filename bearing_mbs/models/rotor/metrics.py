@@ -50,7 +50,7 @@ def _dominant_ratio(frequencies, spectrum, spin_frequency) -> float | None:
 
 
 def whirl_onset(spec: RotorSpec, time, centre, spin, samples: int = 24) -> float | None:
-    """The speed [rpm] at which the journal first strays more than :data:`LINEAR_ORBIT` of the clearance from its
+    """For a balanced rotor's speed sweep, the speed [rpm] at which the journal first strays more than :data:`LINEAR_ORBIT` of the clearance from its
     equilibrium at the current speed (interpolated between ``samples`` speeds), or None if it never does."""
     speeds = np.linspace(spin.min(), spin.max(), samples)
     if speeds[-1] <= speeds[0]:
@@ -82,7 +82,7 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
         "whirl_frequency_ratio": _dominant_ratio(frequencies, spectrum, spin_frequency),
         "linear_whirl_threshold_rpm": whirl_threshold(spec),
     }
-    if spec.drive.ramp_time > 0:
+    if spec.drive.ramp_time > 0 and spec.rotor.unbalance == 0:
         summary["whirl_onset_rpm"] = whirl_onset(spec, result.time, centre, spin)
     if spec.bearing.force == "map":
         summary["map_interpolation_error"] = map_error(spec)
