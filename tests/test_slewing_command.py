@@ -32,6 +32,16 @@ def test_the_seed_scenarios_solve(diameter, tmp_path):
     assert len(summary["ball_loads"]) == BALLS[diameter] == len(summary["contact_angles"])
 
 
+def test_flexible_rings_write_both_curves(tmp_path):
+    out = tmp_path / "out"
+    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out), "--set",
+                 "slewing.rings='flexible'", "--set", "slewing.mount='fixed'"]) == 0
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["rings"] == "flexible" and summary["mount"] == "fixed"
+    assert all(0 < f < r for (_, f), (_, r) in zip(summary["axial_curve"], summary["rigid_axial_curve"]))
+    assert (out / "axial_curve.png").stat().st_size > 10_000
+
+
 def test_a_combined_load_writes_the_state_and_figures(tmp_path):
     out = tmp_path / "out"
     assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out),
@@ -46,6 +56,9 @@ def test_a_combined_load_writes_the_state_and_figures(tmp_path):
     ("slewing.contact_angle=95", "slewing.contact_angle"),
     ("slewing.balls=300", "slewing.balls"),
     ("load.axial=1e6", "load.axial_displacements"),
+    ("slewing.rings='elastic'", "slewing.rings"),
+    ("slewing.mount='bolted'", "slewing.mount"),
+    ("slewing.coefficients='as_printed'", "slewing.coefficients"),
 ])
 def test_bad_input_is_refused(override, field, tmp_path, capsys):
     out = tmp_path / "out"

@@ -68,6 +68,8 @@ def mutated(draw, model):
     data = copy.deepcopy(_base(model))
     for _ in range(draw(st.integers(min_value=1, max_value=4))):
         paths = list(_paths(data))
+        if not paths:  # every table removed: nothing left to mutate
+            break
         path = draw(st.sampled_from(paths))
         parent = data
         for key in path[:-1]:

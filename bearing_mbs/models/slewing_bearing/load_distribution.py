@@ -1,4 +1,4 @@
-r"""Quasi-static load distribution of a four-point-contact slewing bearing with rigid rings.
+r"""Quasi-static load distribution of a four-point-contact slewing bearing, with rigid or flexible rings.
 
 Model (the analytical model document 002 builds on: each ball as two tension-only springs on the diagonals
 between the raceway curvature centres; J. Aguirrebeitia, R. Avilés, I. Fernández de Bustos, M. Abasolo, "Calculation
@@ -19,7 +19,8 @@ the Jacobian of that sum, written analytically (∂f/∂s = Q′ ŝŝᵀ + (Q/|s
 
 :func:`solve` finds x for a load by Newton's method with a backtracking line search (the same style as the radial
 roller solver of document 003), with any of the three coordinates imposed instead (an imposed axial displacement
-gives a load–deflection curve).
+gives a load–deflection curve). Flexible rings (:mod:`.flexible`) add each ball's ring-sector displacements,
+relaxed at every x; the outer Newton loop is the same.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ import numpy as np
 
 from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_stiffness
 from bearing_mbs.elements.slewing_bearings import bearing_state
+from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings, flexible_state
 from bearing_mbs.models.slewing_bearing.geometry import ball_count
 from bearing_mbs.spec import SpecError
 
@@ -99,7 +101,8 @@ class SlewingBearing:
 class Distribution:
     """The state at inner-ring displacement x = (δ_r [m], δ_a [m], θ [rad]): ``load`` (F_r [N], F_a [N], M [N m])
     and its ``stiffness`` ∂load/∂x (3×3, SI); per ball and diagonal (N, 2): ``ball_loads`` Q [N] and
-    ``contact_angles`` α [rad]; ``azimuths`` ψ [rad]."""
+    ``contact_angles`` α [rad]; ``azimuths`` ψ [rad]; with flexible rings, ``ring_displacements`` (N, 8) [m]: each
+    ball's inner-ring centres relative to the ring's rigid motion and outer-ring centres (:mod:`.flexible`)."""
 
     displacement: np.ndarray
     load: np.ndarray
@@ -107,12 +110,18 @@ class Distribution:
     ball_loads: np.ndarray
     contact_angles: np.ndarray
     azimuths: np.ndarray
+    ring_displacements: np.ndarray | None = None
 
 
-def evaluate(bearing: SlewingBearing, displacement) -> Distribution:
-    """Ball loads, the bearing's load and its analytic stiffness at the inner-ring ``displacement`` (the equations'
-    one owner is :func:`bearing_mbs.elements.slewing_bearings.bearing_state`, which the force element uses too)."""
+def evaluate(bearing: SlewingBearing, displacement, rings: FlexibleRings | None = None,
+             ring_displacements=None) -> Distribution:
+    """Ball loads, the bearing's load and its analytic stiffness at the inner-ring ``displacement``; rigid rings
+    (the equations' one owner is :func:`bearing_mbs.elements.slewing_bearings.bearing_state`, which the force
+    element uses too) or flexible ``rings``, relaxed from ``ring_displacements`` (:func:`.flexible.flexible_state`)."""
     x = np.array([float(v) for v in displacement])
+    if rings is not None:
+        load, stiffness, ball_loads, angles, local = flexible_state(bearing, rings, x, ring_displacements)
+        return Distribution(x, load, stiffness, ball_loads, angles, bearing.azimuths, local)
     load, stiffness, ball_loads, angles = bearing_state(bearing.balls, bearing.pitch_diameter / 2,
                                                         bearing.centre_distance, bearing.contact_angle,
                                                         bearing.stiffness, x)
@@ -120,11 +129,12 @@ def evaluate(bearing: SlewingBearing, displacement) -> Distribution:
 
 
 def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = None, tolerance: float = 1e-12,
-          iterations: int = 100) -> Distribution:
+          iterations: int = 100, rings: FlexibleRings | None = None) -> Distribution:
     """The inner-ring displacement that carries ``load`` = (F_r [N], F_a [N], M [N m]), with the coordinates named
     in ``imposed`` ({"radial" | "axial" | "tilt": value}) held at their values instead (their load entries are
     then outputs). Newton's method on the free coordinates, backtracking on the residual; converged when the
-    residual is below ``tolerance`` × the largest of the load and the ball loads' sum."""
+    residual is below ``tolerance`` × the largest of the load and the ball loads' sum. ``rings``: flexible rings
+    (default rigid)."""
     imposed = dict(imposed or {})
     for name in imposed:
         if name not in COORDINATES:
@@ -133,11 +143,13 @@ def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = 
     target = np.asarray(load, dtype=float)
     x = np.array([imposed.get(name, 0.0) for name in COORDINATES])
     if not free.any() or not np.any(target[free]):
-        return evaluate(bearing, x)  # everything imposed, or nothing to carry: the rings stay where they are
+        return evaluate(bearing, x, rings)  # everything imposed, or nothing to carry: the rings stay where they are
     # start with an axial (or radial) approach that loads some balls, so that the Jacobian is not singular
     x[free] += 1e-3 * bearing.centre_distance
+    local = None
     for _ in range(iterations):
-        state = evaluate(bearing, x)
+        state = evaluate(bearing, x, rings, local)
+        local = state.ring_displacements
         residual = (state.load - target)[free]
         scale = max(np.abs(target).max(), state.ball_loads.sum(), 1.0)
         if np.abs(residual).max() <= tolerance * scale:
@@ -148,7 +160,7 @@ def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = 
         while factor > 1e-6:
             trial = x.copy()
             trial[free] += factor * step
-            if np.abs((evaluate(bearing, trial).load - target)[free]).max() < norm:
+            if np.abs((evaluate(bearing, trial, rings, local).load - target)[free]).max() < norm:
                 break
             factor /= 2
         x = trial

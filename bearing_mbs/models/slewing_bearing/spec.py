@@ -1,9 +1,8 @@
 """A ``slewing_bearing`` scenario: ``[scenario]`` (``model = "slewing_bearing"``), ``[slewing]`` and ``[load]``.
 
 ``bearing-mbs slewing`` solves it statically; ``bearing-mbs run`` simulates it when it has a ``[pitch]`` section (a
-blade root carried by the bearing under a gusting tilting moment). Rigid rings only: flexible rings (the
-condensed matrices of :mod:`.ring_stiffness` assembled around the ring) are to come, so their keys are not
-accepted yet.
+blade root carried by the bearing under a gusting tilting moment; rigid rings). ``rings = "flexible"`` puts the
+condensed matrices of :mod:`.ring_stiffness` at every ball (:mod:`.flexible`) in the static solution.
 """
 
 from __future__ import annotations
@@ -12,7 +11,8 @@ import math
 from dataclasses import dataclass
 
 from bearing_mbs.spec import Spec
-from bearing_mbs.spec.fields import finite, in_range, positive, require
+from bearing_mbs.models.slewing_bearing.ring_stiffness import COEFFICIENTS, MOUNTS
+from bearing_mbs.spec.fields import finite, in_range, one_of, positive, require
 
 #: The ``[scenario] model`` value of a slewing-bearing scenario.
 MODEL_NAME = "slewing_bearing"
@@ -23,7 +23,10 @@ class SlewingSection:
     """``[slewing]``: pitch_diameter D_pw [m] > 0; ball_diameter D_w [m] > 0; conformity s = D_w/(2R_c) in
     (0.5, 1); contact_angle α₀ [deg] in (0, 90) (document 002 never states it; 45° is the usual value of
     four-point-contact slewing bearings); balls: optional, at most trunc(π D_pw/D_w) (checked by the bearing);
-    youngs_modulus [Pa] and poisson_ratio of the steel rings and balls (document 002: 200 GPa, 0.3)."""
+    youngs_modulus [Pa] and poisson_ratio of the steel rings and balls (document 002: 200 GPa, 0.3); rings
+    ``rigid`` or ``flexible`` (the condensed sector matrices), mount ``free`` or ``fixed`` (bolted face clamped) and
+    coefficients ``corrected`` or ``as_printed`` of the flexible rings (as printed, the free rings carry the
+    thesis's two errata and are not symmetric positive definite: refused with ``mount = "free"``)."""
 
     pitch_diameter: float
     ball_diameter: float
@@ -32,6 +35,9 @@ class SlewingSection:
     balls: int | None = None
     youngs_modulus: float = 200e9
     poisson_ratio: float = 0.3
+    rings: str = "rigid"
+    mount: str = "free"
+    coefficients: str = "corrected"
 
     def __post_init__(self):
         positive("pitch_diameter", self.pitch_diameter)
@@ -42,6 +48,12 @@ class SlewingSection:
         in_range("poisson_ratio", self.poisson_ratio, 0.0, 0.5, high_open=True)
         if self.balls is not None:
             require(isinstance(self.balls, int) and self.balls >= 1, "balls", self.balls, "an integer >= 1")
+        one_of("rings", self.rings, ("rigid", "flexible"))
+        one_of("mount", self.mount, MOUNTS)
+        one_of("coefficients", self.coefficients, COEFFICIENTS)
+        require(not (self.coefficients == "as_printed" and self.mount == "free"), "coefficients", self.coefficients,
+                "'corrected' with mount = 'free': the printed free-ring matrices have two errata and are not symmetric "
+                "positive definite")
 
 
 @dataclass(frozen=True)
@@ -106,6 +118,8 @@ class SlewingSpec(Spec):
         require(self.slewing is not None, "slewing", None, "a [slewing] section")
         require(self.load is not None, "load", None, "a [load] section: axial, radial, moment or axial_displacements")
         if self.pitch is not None:
+            require(self.slewing.rings == "rigid", "slewing.rings", self.slewing.rings,
+                    "'rigid' with [pitch]: the run's force element models rigid rings")
             require(not self.load.axial_displacements, "load.axial_displacements", list(self.load.axial_displacements),
                     "not with [pitch]: a run applies loads")
 

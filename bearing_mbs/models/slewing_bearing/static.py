@@ -4,7 +4,7 @@
 * with a load: the inner ring's displacement, the ball loads and contact angles around the ring, the largest
   ball load and contact pressure (exact Hertz, :mod:`bearing_mbs.contact.point_contact`), the 3×3 stiffness;
 * with ``axial_displacements``: the axial load–deflection curve, drawn with the engineering formula (3) of
-  document 002 for comparison.
+  document 002 for comparison (with flexible rings, the rigid rings' curve beside it).
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ import numpy as np
 from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_contact
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import json_safe, rounded, write_json
+from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings
 from bearing_mbs.models.slewing_bearing.load_distribution import Distribution, SlewingBearing, solve
 from bearing_mbs.models.slewing_bearing.spec import SlewingSpec
 from bearing_mbs.spec import SpecError
@@ -24,7 +25,8 @@ from bearing_mbs.spec import SpecError
 SUMMARY_FILE = "summary.json"
 UNITS = {"displacement": "m, m, rad", "load": "N, N, N m", "stiffness": "SI (N/m, N/rad, N m/m, N m/rad)",
          "axial_curve": "m, N", "max_ball_load": "N", "max_contact_pressure": "Pa", "ball_loads": "N",
-         "contact_angles": "deg", "azimuths": "deg", "balls": "count", "diagonal_stiffness": "N/m^1.5"}
+         "contact_angles": "deg", "azimuths": "deg", "balls": "count", "diagonal_stiffness": "N/m^1.5",
+         "rigid_axial_curve": "m, N"}
 
 
 def bearing_of(spec: SlewingSpec) -> SlewingBearing:
@@ -34,6 +36,12 @@ def bearing_of(spec: SlewingSpec) -> SlewingBearing:
         return SlewingBearing(s.pitch_diameter, s.ball_diameter, s.conformity, spec.contact_angle_rad, s.balls)
     except SpecError as error:
         raise error.within("slewing") from None
+
+
+def rings_of(spec: SlewingSpec) -> FlexibleRings | None:
+    """The flexible rings of the scenario, or None for rigid rings."""
+    s = spec.slewing
+    return FlexibleRings.of(s.pitch_diameter, s.mount, s.coefficients) if s.rings == "flexible" else None
 
 
 def engineering_deflection(axial_load: float, pitch_diameter: float) -> float:
@@ -59,12 +67,21 @@ def largest_pressure(spec: SlewingSpec, state: Distribution) -> float:
 def slewing_summary(spec: SlewingSpec) -> tuple[dict, list[Distribution]]:
     bearing = bearing_of(spec)
     load = spec.load
-    summary = {"scenario": spec.scenario.name, "balls": bearing.balls, "diagonal_stiffness": bearing.stiffness}
+    rings = rings_of(spec)
+    summary = {"scenario": spec.scenario.name, "balls": bearing.balls, "diagonal_stiffness": bearing.stiffness,
+               "rings": spec.slewing.rings}
+    if rings is not None:
+        summary["mount"] = spec.slewing.mount
     if load.axial_displacements:
-        states = [solve(bearing, imposed={"radial": 0.0, "axial": d, "tilt": 0.0}) for d in load.axial_displacements]
+        states = [solve(bearing, imposed={"radial": 0.0, "axial": d, "tilt": 0.0}, rings=rings)
+                  for d in load.axial_displacements]
         summary["axial_curve"] = [[d, float(state.load[1])] for d, state in zip(load.axial_displacements, states)]
+        if rings is not None:
+            summary["rigid_axial_curve"] = [[d, float(solve(bearing, imposed={"radial": 0.0, "axial": d,
+                                                                              "tilt": 0.0}).load[1])]
+                                            for d in load.axial_displacements]
     else:
-        states = [solve(bearing, (load.radial, load.axial, load.moment))]
+        states = [solve(bearing, (load.radial, load.axial, load.moment), rings=rings)]
         summary["displacement"] = states[0].displacement.tolist()
         summary["load"] = states[0].load.tolist()
     last = max(states, key=lambda state: state.ball_loads.max())
@@ -89,7 +106,7 @@ def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True
     if figures:
         _plot_around_the_ring(spec, states[-1], directory / "ball_loads.png")
         if spec.load.axial_displacements:
-            _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png")
+            _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png", summary.get("rigid_axial_curve"))
     return summary
 
 
@@ -104,16 +121,21 @@ def _plot_around_the_ring(spec, state, path):
     angles.set_ylabel("contact angle [deg]")
     angles.set_xlabel("azimuth ψ [deg] (0 along +x)")
     loads.legend()
-    loads.set_title(f"{spec.scenario.name}: {state.ball_loads.shape[0]} balls, rigid rings")
+    loads.set_title(f"{spec.scenario.name}: {state.ball_loads.shape[0]} balls, {spec.slewing.rings} rings")
     return save_figure(figure, path)
 
 
-def _plot_curve(spec, curve, path):
+def _plot_curve(spec, curve, path, rigid_curve=None):
     displacement, force = np.array(curve).T
     figure, axis = new_figure(figsize=(7, 5))
-    axis.plot(displacement * 1e3, force / 1e3, "o-", label="rigid rings (this model)")
-    engineering = [engineering_deflection(f, spec.slewing.pitch_diameter) + d for d, f in zip(displacement, force)]
-    axis.plot(np.array(engineering) * 1e3, force / 1e3, "--", label="+ ring deflection of the engineering formula (3)")
+    axis.plot(displacement * 1e3, force / 1e3, "o-", label=f"{spec.slewing.rings} rings (this model)")
+    if rigid_curve is not None:
+        axis.plot(*(np.array(rigid_curve).T * [[1e3], [1e-3]]), "s--", label="rigid rings (this model)")
+    base_displacement, base_force = (displacement, force) if rigid_curve is None else np.array(rigid_curve).T
+    engineering = [engineering_deflection(f, spec.slewing.pitch_diameter) + d
+                   for d, f in zip(base_displacement, base_force)]
+    axis.plot(np.array(engineering) * 1e3, base_force / 1e3, "--",
+              label="rigid rings + ring deflection of the engineering formula (3)")
     axis.set_xlabel("axial displacement [mm]")
     axis.set_ylabel("axial force [kN]")
     axis.grid(True, alpha=0.3)
