@@ -7,6 +7,7 @@
   hollow circle and circle–point pairs.
 * :mod:`.kernel` — the compiled (numba) evaluation of all pairs, loads and drives of a scene.
 * :mod:`.twin` — its readable numpy twin.
+* :mod:`.lubricant` — a lubricant's viscosity and density against temperature (ASTM D341).
 
 Nothing here imports an engine.
 """
