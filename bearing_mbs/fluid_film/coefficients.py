@@ -39,8 +39,11 @@ def dynamic_coefficients(force, state: JournalState, clearance: float) -> tuple[
 
 
 def static_stiffness(force, state: JournalState, clearance: float) -> float:
-    """ΔF/Δe [N/m]: the load's growth per unit eccentricity along the eccentricity's direction (x if centred)."""
+    """ΔF/Δe [N/m]: minus the slope of ``force(state) -> (F_x, F_y)`` along the eccentricity's direction (x if
+    centred), by a central difference of :data:`PERTURBATION` C."""
     e = np.asarray(state.eccentricity, dtype=float)
     direction = e / np.linalg.norm(e) if np.any(e) else np.array([1.0, 0.0])
-    stiffness, _ = dynamic_coefficients(force, replace(state, eccentricity_rate=(0.0, 0.0)), clearance)
-    return float(direction @ stiffness @ direction)
+    step = PERTURBATION * clearance
+    plus = np.asarray(force(replace(state, eccentricity=tuple(e + step * direction))))
+    minus = np.asarray(force(replace(state, eccentricity=tuple(e - step * direction))))
+    return float(-direction @ (plus - minus) / (2 * step))

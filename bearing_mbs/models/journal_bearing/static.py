@@ -10,12 +10,11 @@ recess, document 001's resistance network beside the full solution.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.fluid_film.coefficients import PERTURBATION, dynamic_coefficients
+from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.network import network_recess_pressures
 from bearing_mbs.fluid_film.restrictors import (Capillary, ConstantFlow, DirectSupply, Orifice, capillary_resistance,
@@ -57,16 +56,6 @@ def state_at(spec: JournalSpec, eccentricity_ratio: float) -> JournalState:
     return JournalState((e * math.cos(angle), e * math.sin(angle)), (0.0, 0.0), j.speed)
 
 
-def static_stiffness(solve, state: JournalState, clearance: float) -> float:
-    """ΔF/Δe [N/m]: minus the slope of the film force along the displacement's direction (x if centred)."""
-    e = np.asarray(state.eccentricity)
-    direction = e / np.linalg.norm(e) if np.any(e) else np.array([1.0, 0.0])
-    step = PERTURBATION * clearance
-    plus = solve(replace(state, eccentricity=tuple(e + step * direction))).force
-    minus = solve(replace(state, eccentricity=tuple(e - step * direction))).force
-    return float(-direction @ (plus - minus) / (2 * step))
-
-
 def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
     j = spec.journal
     bearing, supply = bearing_of(spec)
@@ -75,13 +64,16 @@ def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
     def solve(state):
         return solve_film(bearing, state, supply, grid, j.cavitation)
 
+    def force(state):
+        return solve(state).force
+
     state = state_at(spec, j.eccentricity_ratio)
     film = solve(state)
-    stiffness, damping = dynamic_coefficients(lambda s: solve(s).force, state, j.radial_clearance)
-    curve = [(eps, solve(state_at(spec, eps)).load_capacity, static_stiffness(solve, state_at(spec, eps),
+    stiffness, damping = dynamic_coefficients(force, state, j.radial_clearance)
+    curve = [(eps, solve(state_at(spec, eps)).load_capacity, static_stiffness(force, state_at(spec, eps),
                                                                             j.radial_clearance))
              for eps in CURVE_ECCENTRICITIES]
-    stiff = static_stiffness(solve, state, j.radial_clearance)
+    stiff = static_stiffness(force, state, j.radial_clearance)
     h_min = float(grid.land_film(grid.theta, state.eccentricity).min())
     summary = {
         "scenario": spec.scenario.name, "model": spec.scenario.model, "cavitation": j.cavitation,
