@@ -1,0 +1,118 @@
+r"""Traction of a lubricated rolling–sliding line contact: the ``ehl`` friction law.
+
+The traction coefficient μ of a pair in contact depends on the slip speed :math:`\Delta u` [m/s], the mean
+entrainment speed :math:`u` [m/s], the normal force :math:`Q` [N] and the film (:mod:`.ehl`). It blends a
+film-shear traction :math:`\mu_f` with boundary friction by the film parameter Λ (mixed lubrication):
+
+.. math:: \mu = \psi(\Lambda)\,\mu_b\,\mathrm{erf}(2\Delta u/v_{reg}) + [1 - \psi(\Lambda)]\,\mu_f,
+          \qquad \psi(\Lambda) = e^{-1.8\,\Lambda^{1.2}},
+
+ψ the share of the load carried by asperities: 0.83 at Λ = 0.1, 0.17 at Λ = 1, 0.002 at Λ = 3, so the
+boundary friction :math:`\mu_b` fades out between Λ ≈ 1 and 3, where full-film lubrication sets in for bearing
+steels (T. A. Harris, M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 2006, ch. 4). The form and its
+constants are our choice of a smooth switch over that range, not a fitted law.
+
+Film-shear traction, two models (``TRACTION_MODELS``):
+
+* ``eyring`` — a physically based, isothermal model at the mean Hertz pressure :math:`\bar p`. The oil in the
+  contact has the Barus viscosity :math:`\bar\eta = \eta_0 e^{\alpha\bar p}` and shears at
+  :math:`\dot\gamma = \Delta u/h` (h the central film). Its viscous stress follows Eyring's law,
+  :math:`\tau_v = \tau_0\,\mathrm{asinh}(\bar\eta\dot\gamma/\tau_0)`; its elastic stress in the transit time
+  2b/u through the contact is :math:`\tau_e = G\,\Delta u\,b/(u h)` (the linear, viscoelastic branch of
+  K. L. Johnson and J. L. Tevaarwerk, "Shear behaviour of elastohydrodynamic oil films", Proc. R. Soc. Lond.
+  A 356 (1977) 215–236, with G the oil's effective shear modulus). The two act in series,
+  :math:`\tau_{ve} = \tau_v\tau_e/(\tau_v + \tau_e)` (exact in the linear limit, the Eyring stress at large
+  slip), and the oil cannot carry more than its limiting shear stress :math:`\tau_L = \Lambda_L\bar p`
+  (S. Bair, W. O. Winer, "A rheological model for elastohydrodynamic contacts based on primary laboratory
+  data", J. Lubr. Technol. 101 (1979) 258–265):
+
+  .. math:: \mu_f = \mathrm{sign}(\Delta u)\,\frac{\tau_L}{\bar p}\tanh\frac{\tau_{ve}}{\tau_L}.
+
+  At small slip the slope is :math:`\mathrm d\mu_f/\mathrm ds = 1/(\bar p h/(\bar\eta u) + \bar p h/(G b))`
+  in the slide-to-roll ratio :math:`s = \Delta u/u`; the ceiling is :math:`\Lambda_L`.
+* ``curve`` — the empirical form fitted to measured traction curves by bearing-dynamics codes,
+  :math:`\mu_f = \mathrm{sign}(s)\,[(A + B|s|)\,e^{-C|s|} + D]` with :math:`A + D = 0` (no jump at zero slip).
+
+The film thickness in the shear rate is floored at the roughness σ: below it the asperities carry the load
+(ψ → 1) and the film-shear term would otherwise stiffen without bound as the film vanishes.
+
+Functions are ``register_jitable`` (the compiled contact kernel calls them inline) and take scalars.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba.extending import register_jitable
+
+from bearing_mbs.contact import ehl
+
+#: Film-shear traction models in the order of their integer codes.
+TRACTION_MODELS = ("eyring", "curve")
+
+#: Columns of a pair's traction row (``PairLaw.traction``), in order; units in :class:`TractionRow`'s fields.
+TRACTION_COLUMNS = (
+    "model", "film_formula", "thermal", "viscosity", "pressure_viscosity", "temperature_viscosity",
+    "conductivity", "modulus", "radius", "length", "roughness", "eyring_stress", "shear_modulus",
+    "limiting_shear", "curve_a", "curve_b", "curve_c", "curve_d",
+)
+N_TRACTION_COLUMNS = len(TRACTION_COLUMNS)
+
+
+@register_jitable
+def asperity_share(film_parameter):
+    r"""ψ(Λ) = exp(−1.8 Λ^1.2): the share of the load on asperities, 1 at Λ = 0."""
+    return np.exp(-1.8 * film_parameter**1.2)
+
+
+@register_jitable
+def eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity, eyring_stress,
+                    shear_modulus, limiting_shear):
+    """Film-shear traction coefficient μ_f [-] of the ``eyring`` model (signed like ``slip``); speed u > 0,
+    film h > 0 [m], mean pressure [Pa] > 0, half-width b [m]."""
+    rate = abs(slip) / film
+    viscous = eyring_stress * math.asinh(viscosity * math.exp(pressure_viscosity * mean_pressure) * rate / eyring_stress)
+    elastic = shear_modulus * abs(slip) * half_width / (speed * film)
+    total = viscous + elastic
+    series = viscous * elastic / total if total > 0.0 else 0.0
+    limit = limiting_shear * mean_pressure
+    return math.copysign(limit * math.tanh(series / limit) / mean_pressure, slip)
+
+
+@register_jitable
+def curve_traction(slide_to_roll, a, b, c, d):
+    r"""The empirical curve :math:`\mathrm{sign}(s)[(A + B|s|)e^{-C|s|} + D]` [-]."""
+    s = abs(slide_to_roll)
+    return math.copysign((a + b * s) * math.exp(-c * s) + d, slide_to_roll)
+
+
+@register_jitable
+def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regularisation_speed):
+    """(μ [-], minimum film [m], Λ [-]) of a lubricated line contact.
+
+    ``row``: the pair's traction row (``TRACTION_COLUMNS``); slip Δu and rolling speed u [m/s] from the pair
+    kinematics; normal force Q [N] > 0; μ_b and v_reg [m/s] of the boundary friction. The entrainment speed is
+    floored at v_reg, where the film and the slide-to-roll ratio lose their meaning.
+    """
+    speed = max(abs(rolling), regularisation_speed)
+    length, radius, modulus = row[9], row[8], row[7]
+    viscosity, pressure_viscosity, roughness = row[3], row[4], row[10]
+    load = normal_force / length
+    central, minimum = ehl.film_thickness(int(row[1]), speed, load, viscosity, pressure_viscosity, modulus, radius)
+    if row[2] > 0.0:
+        reduction = ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[5], row[6]))
+        central *= reduction
+        minimum *= reduction
+    film_parameter = ehl.film_parameter(minimum, roughness)
+    share = asperity_share(film_parameter)
+    if row[0] == 0.0:
+        mean_pressure = 0.25 * np.pi * ehl.hertz_pressure(load, radius, modulus)
+        half_width = ehl.hertz_half_width(load, radius, modulus)
+        film = max(central, roughness)
+        fluid = eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
+                                row[11], row[12], row[13])
+    else:
+        fluid = curve_traction(slip / speed, row[14], row[15], row[16], row[17])
+    boundary = boundary_coefficient * math.erf(2.0 * slip / regularisation_speed)
+    return share * boundary + (1.0 - share) * fluid, minimum, film_parameter
