@@ -90,6 +90,32 @@ SCENARIO_ROWS = {
     # the balls model
     "ball without mass": (DROP, ["balls.0.mass=0"], "balls.0.mass"),
     "constraint on a missing ball": (PAIR, ["constraints.0.bodies=[0, 7]"], "constraints.0.bodies.1"),
+    # lubricated traction and the oil (skidding issue)
+    "ehl without an oil temperature": (STEADY, ["contact.inner_race.friction_law='ehl'"], "lubricant.temperature"),
+    "ehl on the pockets": (STEADY, ["contact.pocket.friction_law='ehl'", "lubricant.oil='iso_vg_320_mineral'",
+                                    "lubricant.temperature=60"], "contact.pocket.friction_law"),
+    "oil below its fit": (STEADY, ["contact.inner_race.friction_law='ehl'", "lubricant.oil='iso_vg_320_mineral'", "lubricant.temperature=-30"],
+                          "lubricant.temperature"),
+    "oil above its fit": (STEADY, ["lubricant.oil='iso_vg_320_mineral'", "lubricant.temperature=150"],
+                          "lubricant.temperature"),
+    "unknown oil": (STEADY, ["lubricant.oil='sae_30'"], "lubricant.oil"),
+    "temperature without an oil": (STEADY, ["lubricant.temperature=60"], "lubricant.oil"),
+    "half an oil": (STEADY, ["lubricant.viscosity_40=3.2e-4", "lubricant.temperature=60"], "lubricant.viscosity_100"),
+    "oil thinner cold than hot": (STEADY, ["lubricant.viscosity_40=2e-5", "lubricant.viscosity_100=3e-5"],
+                                  "lubricant.viscosity_100"),
+    "pressure-viscosity out of range": (STEADY, ["lubricant.oil='iso_vg_320_pao'", "lubricant.pressure_viscosity=1e-6"],
+                                        "lubricant.pressure_viscosity"),
+    "roughness out of range": (STEADY, ["contact.inner_race.roughness=0.0"], "contact.inner_race.roughness"),
+    "eyring stress out of range": (STEADY, ["contact.outer_race.eyring_stress=1e3"], "contact.outer_race.eyring_stress"),
+    "limiting shear out of range": (STEADY, ["contact.inner_race.limiting_shear_coefficient=0.5"],
+                                    "contact.inner_race.limiting_shear_coefficient"),
+    "shear modulus out of range": (STEADY, ["contact.inner_race.shear_modulus=1e12"], "contact.inner_race.shear_modulus"),
+    "unknown traction model": (STEADY, ["contact.inner_race.traction_model='magic'"], "contact.inner_race.traction_model"),
+    "unknown film formula": (STEADY, ["contact.inner_race.film_formula='grubin'"], "contact.inner_race.film_formula"),
+    "traction curve with a jump": (STEADY, ["contact.inner_race.traction_curve=[0.05, 4.0, 40.0, 0.0]"],
+                                   "contact.inner_race.traction_curve"),
+    "curve model without its curve": (STEADY, ["contact.inner_race.friction_law='ehl'", "contact.inner_race.traction_model='curve'"],
+                                      "contact.inner_race.traction_curve"),
 }
 
 #: name -> (study file, overrides, field).

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from bearing_mbs.contact import FRICTION_LAWS, PAIR_KINDS, kernel, twin
+from bearing_mbs.contact.traction import TRACTION_COLUMNS
 from bearing_mbs.core.scene import (
     GROUND,
     Body,
@@ -18,6 +19,17 @@ from bearing_mbs.core.scene import (
     Scene,
 )
 from bearing_mbs.elements import Drag, Load, VelocityServo, pack_scene, scene_forces, scene_forces_twin
+
+
+def lubricated_row(rng, k):
+    """A random traction row of either model (bearing_mbs.contact.traction), thermal reduction on or off."""
+    values = {"model": k % 2, "film_formula": (k // 2) % 2, "thermal": (k + 1) // 2 % 2, "viscosity": rng.uniform(0.01, 0.5),
+              "pressure_viscosity": rng.uniform(1e-8, 3e-8), "temperature_viscosity": rng.uniform(0.02, 0.07),
+              "conductivity": 0.13, "modulus": rng.uniform(1e11, 4e11), "radius": rng.uniform(0.005, 0.05),
+              "length": rng.uniform(0.01, 0.06), "roughness": rng.uniform(5e-8, 5e-7), "eyring_stress": 5e6,
+              "shear_modulus": rng.uniform(1e7, 1e9), "limiting_shear": 0.07, "curve_a": -0.01, "curve_b": 4.0,
+              "curve_c": 40.0, "curve_d": 0.01}
+    return tuple(values[c] for c in TRACTION_COLUMNS)
 
 
 def random_scene(rng, n_bodies=4, n_pairs=40):
@@ -43,6 +55,7 @@ def random_scene(rng, n_bodies=4, n_pairs=40):
             friction_coefficient=rng.uniform(0, 0.3),
             regularisation_speed=rng.uniform(1e-3, 1e-1),
             rolling_resistance_arm=rng.uniform(0, 1e-3),
+            traction=lubricated_row(rng, k // len(FRICTION_LAWS)) if FRICTION_LAWS[k % len(FRICTION_LAWS)] == "ehl" else (),
         )
         direction = rng.normal(size=2)
         pairs.append(

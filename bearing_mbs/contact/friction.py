@@ -16,6 +16,8 @@ References
   the dead-zone rule :math:`F_R = \mu F_N\,\mathrm{sign}(v)` for :math:`|v| \ge \Delta v`, else 0 (eq. 23).
 * Exudyn ``ObjectContactSphereSphere``: friction proportional to slip up to ``frictionProportionalZone``,
   then Coulomb (our ``linear`` law).
+* ``ehl``: lubricated traction, a function of slide-to-roll ratio, pressure and film
+  (:mod:`bearing_mbs.contact.traction`); its regularised sign here is the erf of its boundary part.
 * E. Pennestrì, V. Rossi, P. Salvini, P. P. Valentini, "Review and comparison of dry friction force
   models", Nonlinear Dyn. 83 (2016) 1785–1801 (tanh and saturated-linear regularisations).
 """
@@ -29,7 +31,7 @@ import numpy as np
 from numba.extending import register_jitable
 
 #: Friction-law names in the order of their integer codes in the compiled kernel.
-FRICTION_LAWS = ("none", "erf", "tanh", "linear", "dead_zone")
+FRICTION_LAWS = ("none", "erf", "tanh", "linear", "dead_zone", "ehl")
 
 
 @numba.vectorize(["float64(float64)"], cache=True)
@@ -79,6 +81,7 @@ FRICTION_SIGN = {
     "tanh": tanh_sign,
     "linear": linear_sign,
     "dead_zone": dead_zone_sign,
+    "ehl": erf_sign,  # its boundary part and its rolling-resistance spin sign; the traction is in .traction
 }
 
 #: Law name → :math:`\varphi'(0)\,v_{reg}` (dimensionless slope at zero slip); the dead zone is flat there.
@@ -88,6 +91,7 @@ ZERO_SLIP_SLOPE = {
     "tanh": 2.0,
     "linear": 1.0,
     "dead_zone": 0.0,
+    "ehl": 4.0 / math.sqrt(math.pi),  # the boundary part; the film part's slope is the traction's (.traction)
 }
 
 

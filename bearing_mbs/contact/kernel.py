@@ -11,7 +11,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from bearing_mbs.contact import friction, kinematics
+from bearing_mbs.contact import friction, kinematics, traction
 
 #: Columns of the per-pair output array, in order; units: m, m/s, m/s, N, N, N m, W, m/s.
 PAIR_OUTPUTS = ("gap", "gap_rate", "slip", "normal_force", "friction_force", "rolling_moment", "power_loss",
@@ -22,13 +22,14 @@ N_PAIR_OUTPUTS = len(PAIR_OUTPUTS)
 # Integer codes, read by numba as compile-time constants.
 _CIRCLE_LINE = kinematics.PAIR_KINDS.index("circle_line")
 _CIRCLE_IN_CIRCLE = kinematics.PAIR_KINDS.index("circle_in_circle")
-_ERF, _TANH, _LINEAR, _DEAD_ZONE = (friction.FRICTION_LAWS.index(n) for n in ("erf", "tanh", "linear", "dead_zone"))
+_ERF, _TANH, _LINEAR, _DEAD_ZONE, _EHL = (friction.FRICTION_LAWS.index(n)
+                                         for n in ("erf", "tanh", "linear", "dead_zone", "ehl"))
 
 
 @numba.njit(cache=True)
 def regularised_sign(law, speed, regularisation_speed):
     """Dispatch to the friction law with integer code ``law`` (see ``FRICTION_LAWS``)."""
-    if law == _ERF:
+    if law == _ERF or law == _EHL:
         return friction.erf_sign(speed, regularisation_speed)
     if law == _TANH:
         return friction.tanh_sign(speed, regularisation_speed)
@@ -37,6 +38,18 @@ def regularised_sign(law, speed, regularisation_speed):
     if law == _DEAD_ZONE:
         return friction.dead_zone_sign(speed, regularisation_speed)
     return 0.0  # "none"
+
+
+@numba.njit(cache=True, inline="always")
+def tangential_force(law, normal_force, coefficient, slip, rolling, regularisation_speed, traction_row):
+    """Friction force on body b [N] (along the tangent) of a pair in contact: μ F_N φ(v) for the Coulomb laws,
+    the lubricated traction of :mod:`.traction` for ``ehl``."""
+    if law == _EHL:
+        if normal_force <= 0.0:
+            return 0.0
+        mu = traction.ehl_traction(traction_row, slip, rolling, normal_force, coefficient, regularisation_speed)[0]
+        return -mu * normal_force
+    return friction.friction_force(normal_force, coefficient, regularised_sign(law, slip, regularisation_speed))
 
 
 @numba.njit(cache=True, inline="always")

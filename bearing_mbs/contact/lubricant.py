@@ -23,11 +23,20 @@ WALTHER_OFFSET = 0.7
 ZERO_CELSIUS = 273.15
 
 
+class LubricantError(ValueError):
+    """A lubricant value out of its range: ``field``, ``value`` and what is ``allowed``."""
+
+    def __init__(self, field: str, value, allowed: str):
+        super().__init__(f"{field} = {value!r}: {allowed}")
+        self.field, self.value, self.allowed = field, value, allowed
+
+
 @dataclass(frozen=True)
 class Lubricant:
     """An oil: kinematic viscosity_40 and viscosity_100 [m²/s] at 40 and 100 °C (viscosity_100 < viscosity_40);
     density_15 [kg/m³] at 15 °C; thermal_expansion β_T [1/K] of the density; pressure_viscosity α [1/Pa];
-    temperature_range (low, high) [°C] where its viscosity fit holds; name and source (where the values come from).
+    temperature_range (low, high) [°C] where its viscosity fit holds; thermal_conductivity k [W/(m K)]; name and
+    source (where the values come from).
     """
 
     name: str
@@ -37,15 +46,16 @@ class Lubricant:
     thermal_expansion: float = 6.4e-4
     pressure_viscosity: float = 2.0e-8
     temperature_range: tuple[float, float] = (-10.0, 120.0)
+    thermal_conductivity: float = 0.13
     source: str = ""
 
     def __post_init__(self):
         def refuse(field, value, allowed):
-            raise ValueError(f"{field} = {value!r}: {allowed}")
+            raise LubricantError(field, value, allowed)
 
         for field, low, high in (("viscosity_40", 1e-6, 1e-2), ("viscosity_100", 1e-7, 1e-3),
                                  ("density_15", 600.0, 1200.0), ("thermal_expansion", 0.0, 2e-3),
-                                 ("pressure_viscosity", 5e-9, 4e-8)):
+                                 ("pressure_viscosity", 5e-9, 4e-8), ("thermal_conductivity", 0.05, 0.5)):
             value = getattr(self, field)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and low <= value <= high):
                 refuse(field, value, f"must be in [{low:g}, {high:g}]")
@@ -66,8 +76,8 @@ class Lubricant:
         """ν [m²/s] at ``temperature`` [°C] (ASTM D341); outside ``temperature_range``: ValueError."""
         low, high = self.temperature_range
         if not (math.isfinite(temperature) and low <= temperature <= high):
-            raise ValueError(f"temperature = {temperature!r}: must be in [{low:g}, {high:g}] °C, where the "
-                             f"viscosity fit of {self.name} holds (no extrapolation)")
+            raise LubricantError("temperature", temperature, f"must be in [{low:g}, {high:g}] °C, where the "
+                                 f"viscosity fit of {self.name} holds (no extrapolation)")
         a, b = self._walther()
         return (10 ** (10 ** (a - b * math.log10(temperature + ZERO_CELSIUS))) - WALTHER_OFFSET) * 1e-6
 
@@ -78,3 +88,30 @@ class Lubricant:
     def dynamic_viscosity(self, temperature: float) -> float:
         """η = ρν [Pa s] at ``temperature`` [°C]."""
         return self.density(temperature) * self.kinematic_viscosity(temperature)
+
+    def temperature_viscosity(self, temperature: float) -> float:
+        r"""β = −d ln η/dT [1/K] at ``temperature`` [°C]: a central difference over ±0.5 K, one-sided at the ends
+        of ``temperature_range``."""
+        low, high = self.temperature_range
+        a, b = max(temperature - 0.5, low), min(temperature + 0.5, high)
+        return -(math.log(self.dynamic_viscosity(b)) - math.log(self.dynamic_viscosity(a))) / (b - a)
+
+
+# Typical wind-turbine gear oils. ν40: the ISO 3448 grade midpoint. ν100: typical of mineral (viscosity index
+# about 95) and polyalphaolefin (PAO, about 150) gear oils of the grade, as printed in manufacturers' data sheets
+# (e.g. Mobilgear 600 XP 320: 320 and 24.1 cSt; Mobil SHC Gear 320 WT and Castrol Optigear Synthetic X 320 list
+# 34-38 cSt at 100 °C). α: mineral oils 1.8-2.4e-8 1/Pa, PAOs 1.3-1.7e-8 1/Pa between 40 and 100 °C (P. W. Gold
+# et al., "Viscosity-pressure-temperature behaviour of mineral and synthetic oils", J. Synth. Lubr. 18 (2001)
+# 51-79). Densities at 15 °C and conductivities are typical values of the two base-oil families.
+PRESETS = {
+    "iso_vg_220_mineral": Lubricant("ISO VG 220 mineral gear oil", 220e-6, 19.0e-6, density_15=895.0,
+                                    pressure_viscosity=2.1e-8, source="ISO 3448 grade; typical VI 95 mineral oil"),
+    "iso_vg_320_mineral": Lubricant("ISO VG 320 mineral gear oil", 320e-6, 24.0e-6, density_15=900.0,
+                                    pressure_viscosity=2.2e-8, source="ISO 3448 grade; typical VI 95 mineral oil"),
+    "iso_vg_220_pao": Lubricant("ISO VG 220 PAO gear oil", 220e-6, 25.0e-6, density_15=855.0,
+                                pressure_viscosity=1.5e-8, thermal_conductivity=0.14,
+                                source="ISO 3448 grade; typical VI 150 PAO"),
+    "iso_vg_320_pao": Lubricant("ISO VG 320 PAO gear oil", 320e-6, 34.0e-6, density_15=860.0,
+                                pressure_viscosity=1.5e-8, thermal_conductivity=0.14,
+                                source="ISO 3448 grade; typical VI 150 PAO"),
+}

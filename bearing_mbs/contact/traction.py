@@ -72,7 +72,11 @@ def eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pre
     """Film-shear traction coefficient μ_f [-] of the ``eyring`` model (signed like ``slip``); speed u > 0,
     film h > 0 [m], mean pressure [Pa] > 0, half-width b [m]."""
     rate = abs(slip) / film
-    viscous = eyring_stress * math.asinh(viscosity * math.exp(pressure_viscosity * mean_pressure) * rate / eyring_stress)
+    viscous = 0.0
+    if rate > 0.0:
+        # asinh(x) with x = eta_0 e^{alpha p} rate/tau_0, through log x: e^{alpha p} alone overflows at extreme loads
+        log_x = math.log(viscosity * rate / eyring_stress) + pressure_viscosity * mean_pressure
+        viscous = eyring_stress * (log_x + math.log(2.0) if log_x > 20.0 else math.asinh(math.exp(log_x)))
     elastic = shear_modulus * abs(slip) * half_width / (speed * film)
     total = viscous + elastic
     series = viscous * elastic / total if total > 0.0 else 0.0

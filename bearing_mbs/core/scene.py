@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from bearing_mbs.contact.kinematics import PAIR_KINDS
+from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
 from bearing_mbs.core.topology import Topology
 
 GROUND = -1
@@ -51,7 +52,8 @@ class PairLaw:
     """Resolved contact-law numbers of one pair (see :mod:`bearing_mbs.contact`).
 
     ``normal_law`` and ``restitution`` are kept for reporting and for the native Exudyn connector;
-    the kernels use ``damping_factor`` (0 for the plain power law).
+    the kernels use ``damping_factor`` (0 for the plain power law). ``traction`` is the row of
+    :data:`bearing_mbs.contact.traction.TRACTION_COLUMNS` of a lubricated (``ehl``) pair, empty otherwise.
     """
 
     normal_law: str
@@ -64,6 +66,12 @@ class PairLaw:
     friction_coefficient: float = 0.0
     regularisation_speed: float = 1e-2
     rolling_resistance_arm: float = 0.0
+    traction: tuple[float, ...] = ()
+
+    def __post_init__(self):
+        if (self.friction_law == "ehl") != (len(self.traction) == N_TRACTION_COLUMNS):
+            raise ValueError(f"a pair law with friction_law {self.friction_law!r} has a traction row of "
+                             f"{len(self.traction)} values: 'ehl' needs {N_TRACTION_COLUMNS}, the other laws none")
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from typing import NamedTuple
 import numba
 import numpy as np
 
-from bearing_mbs.contact import friction, normal
+from bearing_mbs.contact import friction, normal, traction
 from bearing_mbs.contact.friction import FRICTION_LAWS
 from bearing_mbs.contact.kernel import (
     N_PAIR_OUTPUTS,
@@ -24,8 +24,10 @@ from bearing_mbs.contact.kernel import (
     pair_motion,
     pair_position,
     regularised_sign,
+    tangential_force,
 )
 from bearing_mbs.contact.kinematics import PAIR_KINDS
+from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
 from bearing_mbs.contact.twin import pair_geometry
 from bearing_mbs.contact.twin import regularised_sign as regularised_sign_twin
 from bearing_mbs.core.force_element import ForceElement
@@ -50,6 +52,15 @@ class PairArrays(NamedTuple):
     friction_coefficient: np.ndarray  # [-]
     regularisation_speed: np.ndarray  # [m/s]
     rolling_resistance_arm: np.ndarray  # [m]
+    traction: np.ndarray  # (P, N_TRACTION_COLUMNS): lubricated-traction rows, zeros for the other laws
+
+
+def traction_rows(pairs) -> np.ndarray:
+    rows = np.zeros((len(pairs), N_TRACTION_COLUMNS))
+    for k, p in enumerate(pairs):
+        if p.law.traction:
+            rows[k] = p.law.traction
+    return rows
 
 
 def pack(pairs) -> PairArrays:
@@ -72,6 +83,7 @@ def pack(pairs) -> PairArrays:
         friction_coefficient=column(lambda p: p.law.friction_coefficient),
         regularisation_speed=column(lambda p: p.law.regularisation_speed),
         rolling_resistance_arm=column(lambda p: p.law.rolling_resistance_arm),
+        traction=traction_rows(pairs),
     )
 
 
@@ -98,7 +110,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
             elastic = normal.elastic_force(gap, pairs.stiffness[k], pairs.exponent[k])
             fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
             law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
-            ft = friction.friction_force(fn, pairs.friction_coefficient[k], regularised_sign(law, slip, vreg))
+            ft = tangential_force(law, fn, pairs.friction_coefficient[k], slip, rolling, vreg, pairs.traction[k])
             arm = pairs.rolling_resistance_arm[k]
             if arm > 0.0:
                 spin_sign = regularised_sign(law, spin * pairs.radius_b[k], vreg)
@@ -132,6 +144,9 @@ def add_forces_twin(pairs, t, q, v, latched, forces, pair_out, power, complete):
     ft = friction.friction_force(
         fn, pairs.friction_coefficient, regularised_sign_twin(pairs.friction_law, slip, pairs.regularisation_speed)
     )
+    for k in np.flatnonzero((pairs.friction_law == FRICTION_LAWS.index("ehl")) & (fn > 0)):
+        ft[k] = -fn[k] * traction.ehl_traction(pairs.traction[k], slip[k], rolling[k], fn[k],
+                                               pairs.friction_coefficient[k], pairs.regularisation_speed[k])[0]
     spin_sign = regularised_sign_twin(pairs.friction_law, spin * pairs.radius_b, pairs.regularisation_speed)
     moment = friction.rolling_resistance_moment(fn, pairs.rolling_resistance_arm, spin_sign)
     damping = fn - normal.elastic_force(gap, pairs.stiffness, pairs.exponent)

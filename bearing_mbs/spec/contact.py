@@ -4,9 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from bearing_mbs.contact.ehl import FILM_FORMULAS
 from bearing_mbs.contact.friction import FRICTION_LAWS
 from bearing_mbs.contact.normal import NORMAL_LAWS
-from bearing_mbs.spec.fields import SpecError, in_range, non_negative, one_of, positive
+from bearing_mbs.contact.traction import TRACTION_MODELS
+from bearing_mbs.spec.fields import SpecError, in_range, non_negative, one_of, positive, require
 
 STIFFNESS_MODELS = ("given", "palmgren", "document")
 #: stiffness [N/m^n] and exponent [-] of ``stiffness_model = "given"`` when the file gives none.
@@ -28,6 +30,16 @@ class ContactSpec:
     :mod:`bearing_mbs.contact.normal`). friction_law: ``none``, ``erf``, ``tanh``, ``linear`` or
     ``dead_zone``. friction_coefficient: μ in [0, 2]. regularisation_speed: v_reg [m/s] > 0.
     rolling_resistance_arm: μ_R [m] >= 0, needs a friction law for its regularisation.
+
+    Lubricated traction (``friction_law = "ehl"``, :mod:`bearing_mbs.contact.traction`; the oil comes from the
+    model's ``[lubricant]``): friction_coefficient is then the boundary coefficient μ_b and regularisation_speed
+    its v_reg (also the floor of the entrainment speed). traction_model: ``eyring`` (default) or ``curve``.
+    film_formula: ``pan_hamrock`` (default) or ``dowson_higginson``. thermal_reduction: Murch–Wilson's inlet
+    heating (default true). roughness: composite rms roughness σ [m] in [1e-9, 1e-5] (default 0.2e-6, ground
+    raceways and rollers). eyring_stress τ0 [Pa] in [1e5, 1e8] (default 5e6), shear_modulus G [Pa] in [1e6, 1e10]
+    (default 1e8), limiting_shear_coefficient Λ_L in [0.01, 0.2] (default 0.07): the ``eyring`` model.
+    traction_curve: (A, B, C, D) of the ``curve`` model, with B > 0, C > 0 and |A + D| <= 1e-3 (no jump at zero
+    slip); required by it.
     """
 
     normal_law: str = "lankarani_nikravesh"
@@ -40,6 +52,14 @@ class ContactSpec:
     friction_coefficient: float = 0.0
     regularisation_speed: float = 1e-2
     rolling_resistance_arm: float = 0.0
+    traction_model: str = "eyring"
+    film_formula: str = "pan_hamrock"
+    thermal_reduction: bool = True
+    roughness: float = 0.2e-6
+    eyring_stress: float = 5e6
+    shear_modulus: float = 1e8
+    limiting_shear_coefficient: float = 0.07
+    traction_curve: tuple[float, ...] | None = None
 
     def __post_init__(self):
         one_of("normal_law", self.normal_law, NORMAL_LAWS)
@@ -65,3 +85,22 @@ class ContactSpec:
             raise SpecError(
                 "rolling_resistance_arm", self.rolling_resistance_arm, "needs a friction_law other than none"
             )
+        one_of("traction_model", self.traction_model, TRACTION_MODELS)
+        one_of("film_formula", self.film_formula, FILM_FORMULAS)
+        require(isinstance(self.thermal_reduction, bool), "thermal_reduction", self.thermal_reduction,
+                "must be true or false")
+        in_range("roughness", self.roughness, 1e-9, 1e-5)
+        in_range("eyring_stress", self.eyring_stress, 1e5, 1e8)
+        in_range("shear_modulus", self.shear_modulus, 1e6, 1e10)
+        in_range("limiting_shear_coefficient", self.limiting_shear_coefficient, 0.01, 0.2)
+        if self.traction_curve is not None:
+            curve = tuple(self.traction_curve)
+            require(len(curve) == 4 and all(isinstance(c, (int, float)) for c in curve), "traction_curve", curve,
+                    "must be four numbers (A, B, C, D)")
+            a, b, c, d = curve
+            require(b > 0 and c > 0, "traction_curve", curve, "needs B > 0 and C > 0")
+            require(abs(a + d) <= 1e-3, "traction_curve", curve, "needs |A + D| <= 1e-3 (no jump at zero slip)")
+            object.__setattr__(self, "traction_curve", tuple(float(x) for x in curve))
+        if self.friction_law == "ehl" and self.traction_model == "curve":
+            require(self.traction_curve is not None, "traction_curve", None,
+                    "the curve traction model needs (A, B, C, D)")

@@ -21,6 +21,7 @@ non-zero.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -30,6 +31,8 @@ from bearing_mbs.contact.line_contact import (
     effective_modulus,
     palmgren_stiffness,
 )
+from bearing_mbs.contact.ehl import FILM_FORMULAS, reduced_radius
+from bearing_mbs.contact.traction import TRACTION_COLUMNS, TRACTION_MODELS
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, Profile, Scene
 from bearing_mbs.core.topology import Topology
 from bearing_mbs.elements import Drag, Load, VelocityServo
@@ -151,9 +154,11 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
         return 0.0
     moment = lubricant.drag_moment
     if moment is None:
-        moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.viscosity, reference_rpm, geometry.pitch_diameter)
-    return roller_drag_coefficient(moment, geometry.rollers, geometry.pitch_diameter,
-                                   geometry.epicyclic_cage_speed(reference_rpm * RPM))
+        moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.operating_viscosity(), reference_rpm,
+                                      geometry.pitch_diameter)
+    inner_speed = reference_rpm * RPM
+    return roller_drag_coefficient(moment, inner_speed, geometry.rollers, geometry.pitch_diameter,
+                                   geometry.epicyclic_cage_speed(inner_speed))
 
 
 def load_profile(spec: Spec) -> Profile:
@@ -188,7 +193,30 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
     length = bearing.cage_width if group == "land" else geometry.roller_length
     modulus = effective_modulus(first.youngs_modulus, first.poisson_ratio, other.youngs_modulus, other.poisson_ratio)
     stiffness = palmgren_stiffness(length) * modulus / STEEL_EFFECTIVE_MODULUS
-    return pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT)
+    law = pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT)
+    if contact.friction_law == "ehl":
+        raceway = geometry.inner_race_diameter if group == "inner_race" else geometry.outer_race_diameter
+        radius = reduced_radius(raceway / 2, geometry.roller_diameter / 2, group == "outer_race")
+        law = replace(law, traction=traction_row(contact, spec.lubricant, 2 * modulus, radius, length))
+    return law
+
+
+def traction_row(contact, lubricant, reduced_modulus: float, radius: float, length: float) -> tuple[float, ...]:
+    """The lubricated-traction row (:data:`~bearing_mbs.contact.traction.TRACTION_COLUMNS`) of a raceway group:
+    its contact settings, the oil at the operating temperature, E' [Pa], the reduced radius R [m] and the contact
+    length l [m]."""
+    oil, temperature = lubricant.lubricant(), lubricant.temperature
+    values = {
+        "model": TRACTION_MODELS.index(contact.traction_model), "film_formula": FILM_FORMULAS.index(contact.film_formula),
+        "thermal": float(contact.thermal_reduction), "viscosity": oil.dynamic_viscosity(temperature),
+        "pressure_viscosity": oil.pressure_viscosity, "temperature_viscosity": oil.temperature_viscosity(temperature),
+        "conductivity": oil.thermal_conductivity, "modulus": reduced_modulus, "radius": radius, "length": length,
+        "roughness": contact.roughness, "eyring_stress": contact.eyring_stress, "shear_modulus": contact.shear_modulus,
+        "limiting_shear": contact.limiting_shear_coefficient,
+    }
+    curve = contact.traction_curve or (0.0, 0.0, 0.0, 0.0)
+    values.update(zip(("curve_a", "curve_b", "curve_c", "curve_d"), curve))
+    return tuple(float(values[name]) for name in TRACTION_COLUMNS)
 
 
 def _reject_initial_overlap(scene: Scene, geometry: BearingGeometry) -> None:

@@ -11,10 +11,14 @@ with ν the kinematic viscosity [mm²/s], n the speed [rpm], d_m the pitch diame
 bearing type and lubrication (2–4 for cylindrical roller bearings with a cage, oil-lubricated; Harris &
 Kotzalas give the table).
 
-We apply it as a viscous drag on each roller's centre, :math:`F = -c\,v`, with c chosen so that the drag
-moment of the Z rollers orbiting at the epicyclic speed of the reference inner-ring speed equals
-:math:`M_0` there: :math:`c = M_0 / (Z\,R_{pw}^2\,\omega_{c,ref})`. Linear drag gives a moment proportional to
-speed where Palmgren's grows as :math:`n^{2/3}`: exact at the reference speed, an approximation elsewhere.
+:math:`M_0` is the torque needed at the rotating ring: the bearing dissipates :math:`M_0\,\omega_i`. We apply it
+as a viscous drag on each roller's centre, :math:`F = -c\,v`, with c chosen so that the Z rollers orbiting at
+the epicyclic cage speed :math:`\omega_c` of the reference inner-ring speed :math:`\omega_i` dissipate that
+power: :math:`Z c (R_{pw}\omega_c)^2 = M_0\,\omega_i`, so :math:`c = M_0\,\omega_i / (Z\,R_{pw}^2\,\omega_c^2)`.
+(Matching the drag's moment about the axis, :math:`Z c R_{pw}^2\omega_c = M_0`, would give
+:math:`\omega_c/\omega_i \approx 0.45` of that power; the model did so until the lubricated-skidding work.)
+Linear drag gives a moment proportional to speed where Palmgren's grows as :math:`n^{2/3}`: exact at the
+reference speed, an approximation elsewhere.
 This load-independent resistance is what makes a lightly loaded bearing skid: the traction that drives the
 rolling set falls with the load, the drag does not.
 """
@@ -33,7 +37,9 @@ def palmgren_drag_moment(drag_factor: float, viscosity: float, speed_rpm: float,
     return moment_n_mm * 1e-3
 
 
-def roller_drag_coefficient(moment: float, rollers: int, pitch_diameter: float, cage_speed: float) -> float:
-    """c [N s/m] of the viscous drag on each roller centre giving the moment [N m] at the cage speed [rad/s]."""
+def roller_drag_coefficient(moment: float, inner_speed: float, rollers: int, pitch_diameter: float,
+                            cage_speed: float) -> float:
+    """c [N s/m] of the viscous drag on each roller centre that dissipates the power of the moment [N m] at the
+    inner-ring speed [rad/s] when the rollers orbit at the cage speed [rad/s]."""
     radius = pitch_diameter / 2
-    return moment / (rollers * radius**2 * abs(cage_speed))
+    return moment * abs(inner_speed) / (rollers * radius**2 * cage_speed**2)

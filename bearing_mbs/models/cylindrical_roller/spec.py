@@ -12,6 +12,8 @@ import math
 from dataclasses import dataclass, field, replace
 
 from bearing_mbs.contact.line_contact import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
+from bearing_mbs.contact.lubricant import PRESETS as LUBRICANTS
+from bearing_mbs.contact.lubricant import Lubricant, LubricantError
 from bearing_mbs.spec import ContactSpec, Spec
 from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, one_of, positive, require
 from bearing_mbs.spec.loading import to_mapping
@@ -337,29 +339,85 @@ class LoadSpec:
 
 @dataclass(frozen=True)
 class LubricantSpec:
-    """``[lubricant]``: load-independent drag of the lubricant on the rollers (:mod:`bearing_mbs.lubrication`).
+    """``[lubricant]``: the oil, and the load-independent drag of the lubricant on the rollers
+    (:mod:`bearing_mbs.models.cylindrical_roller.lubrication`).
 
-    model: ``palmgren`` (default) or ``none``. viscosity [m²/s] > 0: kinematic viscosity at operating
-    temperature (default 32e-6, an ISO VG 320 gearbox oil near 80 °C). drag_factor: Palmgren's f_0 in
-    [0.5, 10] (default 2, a cylindrical roller bearing with cage, oil-lubricated). reference_rpm: the speed at
-    which the drag equals Palmgren's M_0 (default: the drive's highest speed). drag_moment [N m] >= 0: M_0 itself,
-    replacing the formula.
+    The oil: ``oil``, a preset of :data:`bearing_mbs.contact.lubricant.PRESETS` (ISO VG 220/320, mineral or PAO), or
+    its own viscosity_40 and viscosity_100 [m²/s] (kinematic, at 40 and 100 °C; both, and viscosity_100 <
+    viscosity_40), with density_15 [kg/m³] (default 870), thermal_expansion [1/K] of the density (default 6.4e-4),
+    pressure_viscosity α [1/Pa] (default 2e-8) and thermal_conductivity [W/(m K)] (default 0.13) replacing the
+    preset's. temperature [°C]: the operating oil temperature, inside the oil's viscosity fit (-10 to 120 °C, refused
+    outside, not extrapolated); lubricated traction (``friction_law = "ehl"``) needs it.
+
+    The drag: model ``palmgren`` (default) or ``none``. viscosity [m²/s] > 0: the kinematic viscosity in Palmgren's
+    formula (default: the oil's at ``temperature``, else 32e-6, an ISO VG 320 gearbox oil near 80 °C). drag_factor:
+    Palmgren's f_0 in [0.5, 10] (default 2, a cylindrical roller bearing with cage, oil-lubricated; larger for an oil
+    bath or more oil). reference_rpm: the speed at which the drag equals Palmgren's M_0 (default: the drive's highest
+    speed). drag_moment [N m] >= 0: M_0 itself, replacing the formula.
     """
 
     model: str = "palmgren"
-    viscosity: float = 32e-6
+    viscosity: float | None = None
     drag_factor: float = 2.0
     reference_rpm: float | None = None
     drag_moment: float | None = None
+    oil: str | None = None
+    viscosity_40: float | None = None
+    viscosity_100: float | None = None
+    density_15: float | None = None
+    thermal_expansion: float | None = None
+    pressure_viscosity: float | None = None
+    thermal_conductivity: float | None = None
+    temperature: float | None = None
 
     def __post_init__(self):
         one_of("model", self.model, ("palmgren", "none"))
-        positive("viscosity", self.viscosity)
+        if self.viscosity is not None:
+            positive("viscosity", self.viscosity)
         in_range("drag_factor", self.drag_factor, 0.5, 10.0)
         if self.reference_rpm is not None:
             positive("reference_rpm", self.reference_rpm)
         if self.drag_moment is not None:
             non_negative("drag_moment", self.drag_moment)
+        if self.oil is not None:
+            one_of("oil", self.oil, tuple(LUBRICANTS))
+        own = (self.viscosity_40, self.viscosity_100)
+        if self.oil is None and any(v is not None for v in own):
+            require(all(v is not None for v in own), "viscosity_100" if self.viscosity_100 is None else "viscosity_40",
+                    None, "an oil of its own needs both viscosity_40 and viscosity_100")
+        if self.temperature is not None:
+            finite("temperature", self.temperature)
+            require(self.oil is not None or self.viscosity_40 is not None, "oil", None,
+                    "a temperature needs an oil: a preset (" + ", ".join(LUBRICANTS) + ") or viscosity_40 and "
+                    "viscosity_100")
+        if self.oil is not None or self.viscosity_40 is not None:
+            oil = self.lubricant()
+            if self.temperature is not None:
+                low, high = oil.temperature_range
+                in_range("temperature", self.temperature, low, high)
+
+    def lubricant(self) -> Lubricant | None:
+        """The oil (a preset with this table's values over it), or None if the table names none."""
+        if self.oil is None and self.viscosity_40 is None:
+            return None
+        own = {name: getattr(self, name) for name in ("viscosity_40", "viscosity_100", "density_15",
+                                                       "thermal_expansion", "pressure_viscosity",
+                                                       "thermal_conductivity") if getattr(self, name) is not None}
+        try:
+            if self.oil is not None:
+                return replace(LUBRICANTS[self.oil], **own)
+            return Lubricant("custom oil", **own, source="the scenario's [lubricant]")
+        except LubricantError as error:
+            raise SpecError(error.field, error.value, error.allowed) from None
+
+    def operating_viscosity(self) -> float:
+        """Kinematic viscosity [m²/s] for Palmgren's M_0: given, else the oil's at the temperature, else 32e-6."""
+        if self.viscosity is not None:
+            return self.viscosity
+        oil = self.lubricant()
+        if oil is not None and self.temperature is not None:
+            return oil.kinematic_viscosity(self.temperature)
+        return 32e-6
 
 
 @dataclass(frozen=True)
@@ -464,6 +522,14 @@ class BearingModelSpec(Spec):
             require(value <= LOAD_LIMIT * capacity, name, value,
                     f"<= {LOAD_LIMIT:g} C0 = {LOAD_LIMIT * capacity:.4g} N (ISO 76 static load rating C0 = "
                     f"{capacity:.4g} N of this bearing): beyond it the raceways yield, which the model does not hold")
+        for group in CONTACT_GROUPS:
+            lubricated = getattr(self.contact, group).friction_law == "ehl"
+            if lubricated and group not in ("inner_race", "outer_race"):
+                raise SpecError(f"contact.{group}.friction_law", "ehl",
+                                "lubricated (EHL line-contact) traction applies to inner_race and outer_race")
+            if lubricated and self.lubricant.temperature is None:
+                raise SpecError("lubricant.temperature", None, f"contact.{group} uses friction_law = 'ehl', which "
+                                "needs the oil and its operating temperature [°C] in [lubricant]")
         start, end = self.analysis.start, self.scenario.end_time
         if start is not None and not start < end:
             log.warning("analysis.start = %g s is not before scenario.end_time = %g s: the window starts at half the "
