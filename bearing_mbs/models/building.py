@@ -11,9 +11,14 @@ from bearing_mbs.elements import contact_pairs
 from bearing_mbs.spec import ContactSpec, SpecError
 
 
-def pair_law(contact: ContactSpec, stiffness: float | None = None, exponent: float | None = None) -> PairLaw:
+def pair_law(contact: ContactSpec, stiffness: float | None = None, exponent: float | None = None,
+             traction: tuple[float, ...] = ()) -> PairLaw:
     """Resolve a group's contact settings into the numbers the kernels read; ``stiffness`` and ``exponent``
-    replace the given ones when a stiffness model derives them."""
+    replace the given ones when a stiffness model derives them; ``traction`` is the lubricated-traction row of a
+    group with ``friction_law = "ehl"``, which only a model that knows the contact geometry and the oil builds."""
+    if contact.friction_law == "ehl" and not traction:
+        raise SpecError("friction_law", "ehl", "lubricated traction is built for the raceways of the bearing model "
+                        "only (it needs their line-contact geometry and the [lubricant] oil)")
     return PairLaw(
         normal_law=contact.normal_law,
         stiffness=contact.stiffness if stiffness is None else float(stiffness),
@@ -25,6 +30,7 @@ def pair_law(contact: ContactSpec, stiffness: float | None = None, exponent: flo
         friction_coefficient=contact.friction_coefficient,
         regularisation_speed=contact.regularisation_speed,
         rolling_resistance_arm=contact.rolling_resistance_arm,
+        traction=tuple(traction),
     )
 
 

@@ -21,7 +21,6 @@ non-zero.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 
@@ -176,15 +175,8 @@ def load_profile(spec: Spec) -> Profile:
 
 
 def group_law(spec: Spec, geometry: BearingGeometry, group: str):
-    """The pair law of a contact group, with its stiffness model resolved."""
+    """The pair law of a contact group, with its stiffness model and (for ``ehl``) its traction row resolved."""
     contact = getattr(spec.contact, group)
-    if contact.stiffness_model == "given":
-        return pair_law(contact)
-    if contact.stiffness_model == "document":
-        if group not in DOCUMENT_STIFFNESS:
-            raise SpecError(f"contact.{group}.stiffness_model", "document",
-                            "the primary document gives stiffnesses for the raceways only (its KC is '?')")
-        return pair_law(contact, stiffness=DOCUMENT_STIFFNESS[group], exponent=DOCUMENT_EXPONENT)
     bearing = spec.bearing
     other = bearing.cage_material if group in ("pocket", "land") else bearing.roller_material
     first = bearing.ring_material if group == "land" else bearing.roller_material
@@ -192,13 +184,20 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
         other = bearing.ring_material
     length = bearing.cage_width if group == "land" else geometry.roller_length
     modulus = effective_modulus(first.youngs_modulus, first.poisson_ratio, other.youngs_modulus, other.poisson_ratio)
-    stiffness = palmgren_stiffness(length) * modulus / STEEL_EFFECTIVE_MODULUS
-    law = pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT)
-    if contact.friction_law == "ehl":
+    row = ()
+    if contact.friction_law == "ehl":  # the spec admits it on the raceways only
         raceway = geometry.inner_race_diameter if group == "inner_race" else geometry.outer_race_diameter
         radius = reduced_radius(raceway / 2, geometry.roller_diameter / 2, group == "outer_race")
-        law = replace(law, traction=traction_row(contact, spec.lubricant, 2 * modulus, radius, length))
-    return law
+        row = traction_row(contact, spec.lubricant, 2 * modulus, radius, length)
+    if contact.stiffness_model == "given":
+        return pair_law(contact, traction=row)
+    if contact.stiffness_model == "document":
+        if group not in DOCUMENT_STIFFNESS:
+            raise SpecError(f"contact.{group}.stiffness_model", "document",
+                            "the primary document gives stiffnesses for the raceways only (its KC is '?')")
+        return pair_law(contact, stiffness=DOCUMENT_STIFFNESS[group], exponent=DOCUMENT_EXPONENT, traction=row)
+    stiffness = palmgren_stiffness(length) * modulus / STEEL_EFFECTIVE_MODULUS
+    return pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT, traction=row)
 
 
 def traction_row(contact, lubricant, reduced_modulus: float, radius: float, length: float) -> tuple[float, ...]:
