@@ -43,6 +43,7 @@ from numba.extending import register_jitable
 
 #: Film-thickness formulas in the order of their integer codes in the compiled kernel.
 FILM_FORMULAS = ("pan_hamrock", "dowson_higginson")
+_PAN_HAMROCK_CODE = FILM_FORMULAS.index("pan_hamrock")
 
 # Coefficient and exponents (of U, G, W) of each formula: (central, minimum), in FILM_FORMULAS order.
 _PAN_HAMROCK = ((2.922, 0.692, 0.470, -0.166), (1.714, 0.694, 0.568, -0.128))
@@ -84,7 +85,7 @@ def _film(coefficients, speed, load_per_length, viscosity, pressure_viscosity, m
 def film_thickness(formula, speed, load_per_length, viscosity, pressure_viscosity, modulus, radius):
     """(central, minimum) isothermal film thickness [m] of formula code ``formula`` (index into FILM_FORMULAS)
     at entrainment speed u [m/s] >= 0 and load per length w [N/m] > 0; both 0 at u = 0."""
-    table = _PAN_HAMROCK if formula == 0 else _DOWSON_HIGGINSON
+    table = _PAN_HAMROCK if formula == _PAN_HAMROCK_CODE else _DOWSON_HIGGINSON
     central = _film(table[0], speed, load_per_length, viscosity, pressure_viscosity, modulus, radius)
     minimum = _film(table[1], speed, load_per_length, viscosity, pressure_viscosity, modulus, radius)
     return central, minimum

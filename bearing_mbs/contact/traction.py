@@ -50,14 +50,21 @@ from bearing_mbs.contact import ehl
 
 #: Film-shear traction models in the order of their integer codes.
 TRACTION_MODELS = ("eyring", "curve")
+_EYRING = TRACTION_MODELS.index("eyring")
 
-#: Columns of a pair's traction row (``PairLaw.traction``), in order; units in :class:`TractionRow`'s fields.
+#: Columns of a pair's traction row (``PairLaw.traction``), in order: model and film-formula codes, thermal
+#: reduction (1/0), η0 [Pa s], α [1/Pa], β [1/K], k [W/(m K)], E' [Pa], R [m], l [m], σ [m], τ0 [Pa], G [Pa],
+#: Λ_L [-], and the curve's A, B, C, D [-].
 TRACTION_COLUMNS = (
     "model", "film_formula", "thermal", "viscosity", "pressure_viscosity", "temperature_viscosity",
     "conductivity", "modulus", "radius", "length", "roughness", "eyring_stress", "shear_modulus",
     "limiting_shear", "curve_a", "curve_b", "curve_c", "curve_d",
 )
 N_TRACTION_COLUMNS = len(TRACTION_COLUMNS)
+# Column indices, read by numba as compile-time constants (one order: TRACTION_COLUMNS).
+(_MODEL, _FORMULA, _THERMAL, _VISCOSITY, _PRESSURE_VISCOSITY, _TEMPERATURE_VISCOSITY, _CONDUCTIVITY, _MODULUS,
+ _RADIUS, _LENGTH, _ROUGHNESS, _EYRING_STRESS, _SHEAR_MODULUS, _LIMITING_SHEAR, _CURVE_A, _CURVE_B, _CURVE_C,
+ _CURVE_D) = range(N_TRACTION_COLUMNS)
 
 
 @register_jitable
@@ -100,23 +107,24 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
     floored at v_reg, where the film and the slide-to-roll ratio lose their meaning.
     """
     speed = max(abs(rolling), regularisation_speed)
-    length, radius, modulus = row[9], row[8], row[7]
-    viscosity, pressure_viscosity, roughness = row[3], row[4], row[10]
+    length, radius, modulus = row[_LENGTH], row[_RADIUS], row[_MODULUS]
+    viscosity, pressure_viscosity, roughness = row[_VISCOSITY], row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
     load = normal_force / length
-    central, minimum = ehl.film_thickness(int(row[1]), speed, load, viscosity, pressure_viscosity, modulus, radius)
-    if row[2] > 0.0:
-        reduction = ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[5], row[6]))
+    central, minimum = ehl.film_thickness(int(row[_FORMULA]), speed, load, viscosity, pressure_viscosity, modulus, radius)
+    if row[_THERMAL] > 0.0:
+        reduction = ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY],
+                                                              row[_CONDUCTIVITY]))
         central *= reduction
         minimum *= reduction
     film_parameter = ehl.film_parameter(minimum, roughness)
     share = asperity_share(film_parameter)
-    if row[0] == 0.0:
+    if row[_MODEL] == _EYRING:
         mean_pressure = 0.25 * np.pi * ehl.hertz_pressure(load, radius, modulus)
         half_width = ehl.hertz_half_width(load, radius, modulus)
         film = max(central, roughness)
         fluid = eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
-                                row[11], row[12], row[13])
+                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
     else:
-        fluid = curve_traction(slip / speed, row[14], row[15], row[16], row[17])
+        fluid = curve_traction(slip / speed, row[_CURVE_A], row[_CURVE_B], row[_CURVE_C], row[_CURVE_D])
     boundary = boundary_coefficient * math.erf(2.0 * slip / regularisation_speed)
     return share * boundary + (1.0 - share) * fluid, minimum, film_parameter
