@@ -1,4 +1,5 @@
-"""Viscous drags: force −c·v on a body's centre and torque −c_θ·ω (e.g. the lubricant's drag on a roller)."""
+"""Drags: force −(c + c_2|v|)·v on a body's centre and torque −c_θ·ω (e.g. the lubricant's drag on a roller: linear
+for a viscous resistance, quadratic for the form drag of a body moving through an oil–air mixture)."""
 
 from __future__ import annotations
 
@@ -13,25 +14,28 @@ from bearing_mbs.core.force_element import ForceElement
 
 @dataclass(frozen=True)
 class Drag:
-    """Viscous drag on a body: force −linear·v [N] on its centre and torque −angular·ω [N m]; linear
-    [N s/m] >= 0, angular [N m s/rad] >= 0."""
+    """Drag on a body: force −(linear + quadratic·|v|)·v [N] on its centre and torque −angular·ω [N m]; linear
+    [N s/m] >= 0, angular [N m s/rad] >= 0, quadratic [N s²/m²] >= 0."""
 
     name: str
     body: int
     linear: float
     angular: float = 0.0
+    quadratic: float = 0.0
 
 
 class DragArrays(NamedTuple):
     body: np.ndarray  # (G,) int64
     linear: np.ndarray  # (G,) [N s/m]
     angular: np.ndarray  # (G,) [N m s/rad]
+    quadratic: np.ndarray  # (G,) [N s²/m²]
 
 
 def pack(drags) -> DragArrays:
     return DragArrays(body=np.array([d.body for d in drags], dtype=np.int64),
                       linear=np.array([d.linear for d in drags], dtype=float),
-                      angular=np.array([d.angular for d in drags], dtype=float))
+                      angular=np.array([d.angular for d in drags], dtype=float),
+                      quadratic=np.array([d.quadratic for d in drags], dtype=float))
 
 
 @numba.njit(cache=True, inline="always")
@@ -39,17 +43,20 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
     drags = parameters
     for j in range(drags.body.size):
         i = 3 * drags.body[j]
-        linear, angular = drags.linear[j], drags.angular[j]
-        forces[i] -= linear * v[i]
-        forces[i + 1] -= linear * v[i + 1]
+        speed_squared = v[i] ** 2 + v[i + 1] ** 2
+        resistance = drags.linear[j] + drags.quadratic[j] * np.sqrt(speed_squared)
+        angular = drags.angular[j]
+        forces[i] -= resistance * v[i]
+        forces[i + 1] -= resistance * v[i + 1]
         forces[i + 2] -= angular * v[i + 2]
-        power[1] += linear * (v[i] ** 2 + v[i + 1] ** 2) + angular * v[i + 2] ** 2
+        power[1] += resistance * speed_squared + angular * v[i + 2] ** 2
 
 
 def add_forces_twin(drags, t, q, v, latched, forces, pair_out, power, complete):
     body_forces, velocities = forces.reshape(-1, 3), v.reshape(-1, 3)
     for j, body in enumerate(drags.body):
-        coefficients = np.array([drags.linear[j], drags.linear[j], drags.angular[j]])
+        resistance = drags.linear[j] + drags.quadratic[j] * np.hypot(*velocities[body, :2])
+        coefficients = np.array([resistance, resistance, drags.angular[j]])
         body_forces[body] -= coefficients * velocities[body]
         power[1] += coefficients @ velocities[body] ** 2
 

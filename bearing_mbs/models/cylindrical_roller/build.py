@@ -44,7 +44,9 @@ from bearing_mbs.models.cylindrical_roller.drivetrain import (
     speed_profile,
 )
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
-from bearing_mbs.models.cylindrical_roller.lubrication import palmgren_drag_moment, roller_drag_coefficient
+from bearing_mbs.models.cylindrical_roller.lubrication import (mixture_density, orbital_drag_coefficient,
+                                                               palmgren_drag_moment, roller_drag_coefficient,
+                                                               spin_drag_coefficient)
 from bearing_mbs.spec import Spec, SpecError
 
 #: The primary document's raceway laws K δ^1.3 (annex II: KI, KE, NI = NE).
@@ -131,8 +133,9 @@ def build_bearing_scene(spec: Spec) -> Scene:
         gain = ring_inertia / drive.servo_time_constant
         drives.append(VelocityServo("speed_servo", INNER_RING, gain, speed_profile(drive)))
 
-    drags = tuple(Drag(f"roller{k}-drag", first_roller + k, coefficient) for k in range(geometry.rollers)
-                  if (coefficient := roller_drag(spec, geometry)) > 0)
+    coefficients = roller_drag(spec, geometry)
+    drags = tuple(Drag(f"roller{k}-drag", first_roller + k, **{"linear": 0.0, **coefficients})
+                  for k in range(geometry.rollers) if coefficients)
     roles = {"inner_ring": [INNER_RING], "rollers": list(range(first_roller, first_roller + geometry.rollers))}
     if caged:
         roles["cage"] = [CAGE]
@@ -145,19 +148,29 @@ def build_bearing_scene(spec: Spec) -> Scene:
     return scene
 
 
-def roller_drag(spec: Spec, geometry: BearingGeometry) -> float:
-    """Viscous drag coefficient [N s/m] on each roller centre from ``[lubricant]`` (0 without drag)."""
+def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
+    """The drag coefficients on each roller from ``[lubricant]`` (linear [N s/m], quadratic [N s²/m²], angular
+    [N m s/rad]; empty without drag)."""
     lubricant = spec.lubricant
     reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec.drive)
     if lubricant.model == "none" or not reference_rpm:
-        return 0.0
+        return {}
+    inner_speed = reference_rpm * RPM
+    cage_speed = geometry.epicyclic_cage_speed(inner_speed)
+    if lubricant.model == "churning":
+        oil, temperature = lubricant.lubricant(), lubricant.temperature
+        density = mixture_density(lubricant.oil_fraction, oil.density(temperature))
+        orbital_speed = abs(cage_speed) * geometry.pitch_diameter / 2
+        return {"quadratic": orbital_drag_coefficient(density, oil.kinematic_viscosity(temperature),
+                                                      geometry.roller_diameter, geometry.roller_length, orbital_speed),
+                "angular": spin_drag_coefficient(lubricant.oil_fraction * oil.dynamic_viscosity(temperature),
+                                                 geometry.roller_diameter / 2, geometry.roller_length)}
     moment = lubricant.drag_moment
     if moment is None:
         moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.operating_viscosity(), reference_rpm,
                                       geometry.pitch_diameter)
-    inner_speed = reference_rpm * RPM
-    return roller_drag_coefficient(moment, inner_speed, geometry.rollers, geometry.pitch_diameter,
-                                   geometry.epicyclic_cage_speed(inner_speed))
+    linear = roller_drag_coefficient(moment, inner_speed, geometry.rollers, geometry.pitch_diameter, cage_speed)
+    return {"linear": linear} if linear > 0 else {}
 
 
 def load_profile(spec: Spec) -> Profile:

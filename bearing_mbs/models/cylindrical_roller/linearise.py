@@ -147,7 +147,8 @@ class BearingLayout:
         x, y = roller.position[:2]
         orbit = (x * roller.velocity[1] - y * roller.velocity[0]) / max(x * x + y * y, 1e-300)
         drags = [d for d in scene.items_of(Drag) if d.body == rollers[0]]
-        drag = (sum(d.linear for d in drags), sum(d.angular for d in drags))
+        orbit_speed = abs(orbit) * math.hypot(x, y)
+        drag = (sum(d.linear + 2 * d.quadratic * orbit_speed for d in drags), sum(d.angular for d in drags))
         return cls(scene, ring, ring_body.name, ring_body.mass, ring_body.inertia, rollers, roller.mass,
                    roller.inertia, inner_pairs[0].radius_b, inner_pairs[0].radius_a, outer_pair.radius_a,
                    inner_pairs[0].law, outer_pair.law, sum(d.gain for d in servos), max(speeds), abs(orbit), drag)

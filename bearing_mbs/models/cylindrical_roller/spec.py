@@ -337,6 +337,10 @@ class LoadSpec:
                     "must have one value per entry of times")
 
 
+#: The lubricant's drag on the rolling set (:mod:`bearing_mbs.models.cylindrical_roller.lubrication`).
+DRAG_MODELS = ("palmgren", "churning", "none")
+
+
 @dataclass(frozen=True)
 class LubricantSpec:
     """``[lubricant]``: the oil, and the load-independent drag of the lubricant on the rollers
@@ -349,11 +353,18 @@ class LubricantSpec:
     preset's. temperature [°C]: the operating oil temperature, inside the oil's viscosity fit (-10 to 120 °C, refused
     outside, not extrapolated); lubricated traction (``friction_law = "ehl"``) needs it.
 
-    The drag: model ``palmgren`` (default) or ``none``. viscosity [m²/s] > 0: the kinematic viscosity in Palmgren's
-    formula (default: the oil's at ``temperature``, else 32e-6, an ISO VG 320 gearbox oil near 80 °C). drag_factor:
-    Palmgren's f_0 in [0.5, 10] (default 2, a cylindrical roller bearing with cage, oil-lubricated; larger for an oil
-    bath or more oil). reference_rpm: the speed at which the drag equals Palmgren's M_0 (default: the drive's highest
-    speed). drag_moment [N m] >= 0: M_0 itself, replacing the formula.
+    The drag: model ``palmgren`` (default), ``churning`` or ``none``.
+
+    * ``palmgren``: a linear drag on each roller centre that dissipates Palmgren's M_0. viscosity [m²/s] > 0: the
+      kinematic viscosity in Palmgren's formula (default: the oil's at ``temperature``, else 32e-6, an ISO VG 320
+      gearbox oil near 80 °C). drag_factor: Palmgren's f_0 in [0.5, 10] (default 2, a cylindrical roller bearing
+      with cage, oil-lubricated; larger for an oil bath or more oil). reference_rpm: the speed at which the drag
+      equals Palmgren's M_0 (default: the drive's highest speed). drag_moment [N m] >= 0: M_0 itself, replacing
+      the formula.
+    * ``churning``: each roller's orbital form drag (∝ v²) and spin drag in the oil–air mixture; needs the oil and
+      its temperature. oil_fraction in (0, 1]: the oil's volume fraction in the bearing cavity (default 0.05, our
+      choice: no measurement of the seed bearing's cavity is at hand, so sweep it). reference_rpm: the speed at
+      which the drag coefficient's Reynolds number is taken (default: the drive's highest speed).
     """
 
     model: str = "palmgren"
@@ -369,9 +380,11 @@ class LubricantSpec:
     pressure_viscosity: float | None = None
     thermal_conductivity: float | None = None
     temperature: float | None = None
+    oil_fraction: float = 0.05
 
     def __post_init__(self):
-        one_of("model", self.model, ("palmgren", "none"))
+        one_of("model", self.model, DRAG_MODELS)
+        in_range("oil_fraction", self.oil_fraction, 0.0, 1.0, low_open=True)
         if self.viscosity is not None:
             positive("viscosity", self.viscosity)
         in_range("drag_factor", self.drag_factor, 0.5, 10.0)
@@ -395,6 +408,9 @@ class LubricantSpec:
             if self.temperature is not None:
                 low, high = oil.temperature_range
                 in_range("temperature", self.temperature, low, high)
+        if self.model == "churning":
+            require(self.temperature is not None, "temperature", None, "the churning drag needs the oil and its "
+                    "operating temperature [°C] (its density and viscosity)")
 
     def lubricant(self) -> Lubricant | None:
         """The oil (a preset with this table's values over it), or None if the table names none."""
