@@ -2,14 +2,19 @@ r"""Cage slip against radial load: does the cage skid more as the load falls?
 
 Field measurements on wind-turbine high-speed-shaft bearings and the skidding literature say it does: the rollers
 and cage are slowed by load-independent drag, while the traction that drives them scales with the load (Jain &
-Hunt 2011, Jain 2012, Han, Li & Chu 2018). In the model the load-independent drag is Palmgren's M0 on the rollers
-(``[lubricant]``).
+Hunt 2011, Jain 2012, Han, Li & Chu 2018). In the model the load-independent drag is the lubricant's on the rollers
+(``[lubricant]``: Palmgren's M0, or the churning drag of an oil–air mixture).
 
 ``bearing-mbs skidding SCENARIO.toml --out DIR`` runs :func:`run`: the base scenario (a bearing at constant
 speed, e.g. ``scenarios/seed_hss_steady.toml``) at each radial load of :data:`LOADS` with each cage model of
 :data:`CAGES`; it writes ``skidding_vs_load.csv`` (a row per run, :data:`COLUMNS`), ``skidding_vs_load.md`` (the
 table and the trend of each cage) and ``skidding_vs_load.png`` (cage slip against load, log axes). The total
 radial load on the bearing is the applied load plus the weight of the inner ring and its supported shaft mass.
+
+Each row also gives the steady cage slip of the quasi-static skidding balance
+(:mod:`bearing_mbs.models.cylindrical_roller.steady_skidding`) with the same laws: the value a run converges to.
+At light load the cage and rollers approach it with a time constant of the order of a second (the drive there is
+weak), so a short run reads less slip; compare the window halves.
 
 The penalty cage's slip averaged over a window of duration T is only resolved to about
 :func:`pocket_play_resolution`: the cage may shift by the pocket clearance H relative to the rollers, an angle of
@@ -29,6 +34,7 @@ from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.metrics import window
+from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
 from bearing_mbs.runner import run_spec, summarize
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import positive
@@ -50,7 +56,7 @@ SETTLED_FRACTION = 0.2
 CSV_FILE, TABLE_FILE, FIGURE_FILE = "skidding_vs_load.csv", "skidding_vs_load.md", "skidding_vs_load.png"
 
 COLUMNS = ("cage_model", "radial_load", "total_load", "load_fraction", "cage_slip", "cage_slip_first_half",
-           "cage_slip_second_half", "resolution", "settled", "max_roller_slip_inner", "max_roller_load",
+           "cage_slip_second_half", "quasi_static_slip", "resolution", "settled", "max_roller_slip_inner", "max_roller_load",
            "max_pocket_force", "max_cage_eccentricity", "wall_time_s", "steps", "status", "warnings")
 
 
@@ -112,6 +118,7 @@ def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
         "cage_slip": summary["cage_slip"],
         "cage_slip_first_half": first,
         "cage_slip_second_half": second,
+        "quasi_static_slip": quasi_static_slip(scene),
         "resolution": pocket_play_resolution(spec, duration),
         "settled": bool(abs(first - second) <= tolerance),
         "max_roller_slip_inner": summary["max_roller_slip_inner"],
@@ -123,6 +130,15 @@ def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
         "status": summary["status"],
         "warnings": "; ".join(summary.get("warnings") or ()),
     }
+
+
+def quasi_static_slip(scene) -> float:
+    """The steady cage slip [-] of the quasi-static skidding balance, NaN (logged) where it has none."""
+    try:
+        return solve_skidding(scene).cage_slip
+    except (ArithmeticError, SpecError) as error:
+        log.warning("no quasi-static skidding balance for %s: %s", scene.name, error)
+        return float("nan")
 
 
 def total_radial_load(spec: Spec) -> float:
@@ -162,7 +178,7 @@ def trend(rows: list[dict]) -> dict:
 
 def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str = "") -> Path:
     """Cage slip [%] against total radial load [N], one curve per cage model (log axes), with the halves of
-    each window as a bar and, around the penalty curve, the pocket-play resolution of the window as a band;
+    each window as a bar and the quasi-static balance dashed and, around the penalty curve, the pocket-play resolution of the window as a band;
     the largest inner-raceway slip ratio below."""
     figure, (cage, rollers) = new_figure(2, 1, figsize=(6.5, 6.0), sharex=True)
     styles = {"penalty": ("C0", "o"), "constraint": ("C1", "s")}
@@ -181,6 +197,8 @@ def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str
                               label=f"{name}: ± pocket-play resolution ({resolution.max():.2g} %)")
         cage.vlines(load, halves.min(axis=1), halves.max(axis=1), color=color, alpha=0.6, linewidth=2)
         cage.plot(load, slip, marker + "-", color=color, label=f"{name} cage (bars: window halves)")
+        cage.plot(load, 100 * np.array([row["quasi_static_slip"] for row in rows]), marker + "--", color=color,
+                  fillstyle="none", label=f"{name} cage, quasi-static balance")
         rollers.plot(load, [row["max_roller_slip_inner"] or np.nan for row in rows], marker + "-", color=color,
                      label=f"{name} cage")
     cage.set_yscale("log" if min(all_slips) > 0 else "symlog")
@@ -201,16 +219,16 @@ def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str
 
 def markdown_table(sweeps: dict[str, list[dict]]) -> str:
     """All rows as a Markdown table (slips in %)."""
-    lines = ["| cage | radial load [N] | total load [N] | cage slip [%] | window halves [%] | resolution [%] | "
-             "settled | largest inner-raceway slip ratio | max roller load [N] | max pocket force [N] | "
+    lines = ["| cage | radial load [N] | total load [N] | cage slip [%] | window halves [%] | quasi-static [%] | "
+             "resolution [%] | settled | largest inner-raceway slip ratio | max roller load [N] | max pocket force [N] | "
              "max cage eccentricity [µm] | wall [s] |",
-             "|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"]
+             "|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"]
     for name, rows in sweeps.items():
         for row in rows:
             lines.append(
                 f"| {name} | {row['radial_load']:g} | {row['total_load']:.0f} | {100 * row['cage_slip']:.3g} | "
                 f"{100 * row['cage_slip_first_half']:.3g}, {100 * row['cage_slip_second_half']:.3g} | "
-                f"{100 * row['resolution']:.3g} | {'yes' if row['settled'] else 'no'} | "
+                f"{100 * row['quasi_static_slip']:.3g} | {100 * row['resolution']:.3g} | {'yes' if row['settled'] else 'no'} | "
                 f"{row['max_roller_slip_inner'] or float('nan'):.3g} | {row['max_roller_load']:.0f} | "
                 f"{row['max_pocket_force'] or float('nan'):.0f} | "
                 f"{1e6 * (row['max_cage_eccentricity'] or float('nan')):.0f} | {row['wall_time_s']:.1f} |")

@@ -1,0 +1,297 @@
+r"""Quasi-static skidding: the steady cage and roller speeds of a caged roller bearing, in the style of
+T. A. Harris, "An analytical method to predict skidding in high speed roller bearings", ASLE Trans. 9 (1966)
+229–241, with the scene's own contact, traction and drag laws.
+
+It cross-checks the dynamic engines on steady lubricated states, as :mod:`.quasistatic` does for the loads:
+it shares their force laws (one owner per formula) but none of their integration, constraints or transients.
+
+The state: the cage, centred, turns at :math:`\omega_c`; roller j sits on the pitch circle :math:`R` at
+:math:`\psi_j` and spins at :math:`\omega_j` (counter-clockwise positive, like the ring's :math:`\omega_i`).
+Its contact loads :math:`Q_{i,j}, Q_{o,j}` come from the planar load distribution at the centrifugal force of
+the orbit :math:`\omega_c` (:func:`.quasistatic.solve_radial`). Along the orbit's direction
+:math:`e_\theta`, with roller radius r and raceway contact radii :math:`r_i = R - r`, :math:`r_o = R + r`:
+
+* sliding of the roller on the inner ring :math:`\Delta u_i = \omega_c R - \omega_j r - \omega_i r_i`, on the
+  outer ring :math:`\Delta u_o = \omega_c R + \omega_j r`;
+* rolling (entrainment) speeds, the mean surface speeds relative to the contact points, which move with the
+  cage: :math:`u_i = \tfrac12[(\omega_i - \omega_c) r_i + (\omega_c - \omega_j) r]`,
+  :math:`u_o = \tfrac12[\omega_c r_o + (\omega_c - \omega_j) r]`;
+* tractions on the roller :math:`F = -\mu(\Delta u, u, Q)\,Q` (the pair's law), rolling-resistance moments
+  :math:`-a\,Q\,\varphi(\omega_{rel} r)`, drag :math:`-(c + c_2 v) v` on the centre at
+  :math:`v = \omega_c R` and :math:`-c_\theta \omega_j` on the spin.
+
+Each roller's spin follows :math:`I\dot\omega_j = -r F_i + r F_o + M_{R,i} + M_{R,o} - c_\theta\omega_j` around
+its orbit (:math:`\psi = \omega_c t`, periodic): held at its balance in the load zone, coasting outside it. Its
+tangential balance gives the pocket force on it, :math:`P_j = (c + c_2 v) v - F_i - F_o`. The cage's torque
+balance, averaged over the orbit (the cage's inertia filters the pitch's ripple), fixes :math:`\omega_c`:
+:math:`\langle -R\sum_j P_j\rangle - \mu_l N r_c\,\varphi(\omega_c r_c) = 0`, with N the land's normal force,
+the magnitude of the cage's weight plus, with pocket contacts, :math:`-\sum_j P_j e_{\theta,j}` (the constraint
+cage holds each roller's orbital angle about the axis, so its pockets put a torque on the cage and no force).
+
+Left out: the weight of the rollers (its tangential parts cancel around the orbit), the cage's eccentricity and
+the inner ring's vibration. Harris (1966) also held each roller at its balance everywhere; here the spin's
+inertia outside the load zone is kept, as the dynamic engines keep it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import NamedTuple
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+from bearing_mbs.contact.friction import erf_sign
+from bearing_mbs.contact.traction import ehl_traction
+from bearing_mbs.core.scene import OrbitConstraint, Scene
+from bearing_mbs.elements import Drag
+from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
+from bearing_mbs.models.cylindrical_roller.linearise import BearingLayout
+from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
+from bearing_mbs.spec.fields import SpecError
+
+
+@dataclass(frozen=True)
+class SkiddingSolution:
+    """The steady state: cage_speed ω_c and the epicyclic (slip-free) cage speed [rad/s]; at Z × phases roller
+    azimuths around the orbit, sorted: roller_angles ψ [rad], inner_loads, outer_loads Q [N], roller_speeds ω_j
+    [rad/s], pocket_forces P [N] (on the roller, along the orbit), inner_traction, outer_traction F [N] (on the
+    roller, along the orbit), inner_sliding, outer_sliding Δu [m/s], inner_rolling, outer_rolling u [m/s];
+    land_torque: the land's mean friction torque on the cage [N m]; ring_torque: the rollers' mean torque on the
+    inner ring [N m] (the drive supplies −ring_torque: the bearing's friction torque); power_loss: the mean power
+    dissipated at the contacts, by the drags and at the land [W]."""
+
+    cage_speed: float
+    epicyclic_cage_speed: float
+    roller_angles: np.ndarray
+    inner_loads: np.ndarray
+    outer_loads: np.ndarray
+    roller_speeds: np.ndarray
+    pocket_forces: np.ndarray
+    inner_traction: np.ndarray
+    outer_traction: np.ndarray
+    inner_sliding: np.ndarray
+    outer_sliding: np.ndarray
+    inner_rolling: np.ndarray
+    outer_rolling: np.ndarray
+    land_torque: float
+    ring_torque: float
+    power_loss: float
+
+    @property
+    def cage_slip(self) -> float:
+        """1 − ω_c/ω_c,epicyclic [-], the quantity ``summarize`` reports as cage slip."""
+        return 1.0 - self.cage_speed / self.epicyclic_cage_speed
+
+
+@dataclass(frozen=True)
+class _Bearing:
+    """What the balance reads from the scene."""
+
+    layout: BearingLayout
+    shaft_speed: float
+    load: np.ndarray
+    drag: tuple[float, float, float]  # linear [N s/m], quadratic [N s²/m²], angular [N m s/rad]
+    cage_mass: float
+    cage_radius: float
+    land_law: object | None
+    gravity: np.ndarray
+    pocket_contacts: bool
+
+
+def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
+    """The steady cage and roller speeds of a constant-speed, constant-load bearing scene with a cage."""
+    bearing = _read(scene)
+    layout = bearing.layout
+    epicyclic = epicyclic_cage_speed(bearing.shaft_speed, 2 * layout.roller_radius, layout.pitch_diameter)
+
+    def torque(cage_speed):
+        return _state(bearing, cage_speed, phases)[0]
+
+    low, high = 1e-3 * epicyclic, 1.02 * epicyclic
+    if torque(low) * torque(high) > 0:
+        raise SpecError("scene", scene.name, "a cage torque balance between 0.1 % and 102 % of the epicyclic cage "
+                        "speed; none found (is the bearing driven at all?)")
+    cage_speed = brentq(torque, low, high, xtol=1e-12 * epicyclic, rtol=1e-12)
+    return SkiddingSolution(cage_speed, epicyclic, **_state(bearing, cage_speed, phases)[1])
+
+
+def _read(scene: Scene) -> _Bearing:
+    layout = BearingLayout.of(scene)
+    pairs = scene.topology.pairs if scene.topology is not None else {}
+    if layout is None or "cage" not in scene.topology.bodies:
+        raise SpecError("scene", scene.name, "a caged roller bearing (inner ring, rollers, cage)")
+    times, applied = layout.applied_load()
+    if np.ptp(applied, axis=0).max() > 0:
+        raise SpecError("load", "varies in time", "a constant load for a steady state")
+    drags = [d for d in scene.items_of(Drag) if d.body == layout.rollers[0]]
+    cage = scene.bodies[int(scene.topology.bodies["cage"][0])]
+    land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
+    return _Bearing(layout, layout.shaft_speed, applied[-1],
+                    (sum(d.linear for d in drags), sum(d.quadratic for d in drags), sum(d.angular for d in drags)),
+                    cage.mass, land.radius_b if land is not None else 0.0, land.law if land is not None else None,
+                    np.asarray(scene.gravity, float), not any(isinstance(c, OrbitConstraint) for c in scene.constraints))
+
+
+def _traction(law, sliding, rolling, load):
+    """The tangential force [N] on the roller at one contact (the kernel's convention: −μ Q)."""
+    if load <= 0.0:
+        return 0.0
+    if law.friction_law == "ehl":
+        mu = ehl_traction(np.asarray(law.traction), sliding, rolling, load, law.friction_coefficient,
+                          law.regularisation_speed)[0]
+    else:
+        mu = law.friction_coefficient * erf_sign(sliding, law.regularisation_speed)
+    return -mu * load
+
+
+def _rolling_resistance(law, load, relative_spin, radius):
+    return -law.rolling_resistance_arm * load * erf_sign(relative_spin * radius, law.regularisation_speed)
+
+
+class _RollerForces(NamedTuple):
+    moment: float  # on the roller about its centre [N m]
+    inner_traction: float  # F_i [N]
+    outer_traction: float  # F_o [N]
+    inner_sliding: float  # Δu_i [m/s]
+    outer_sliding: float  # Δu_o [m/s]
+    inner_rolling: float  # u_i [m/s]
+    outer_rolling: float  # u_o [m/s]
+    pocket_force: float  # P [N]
+    ring_torque: float  # the roller's torque on the inner ring [N m]
+    power_loss: float  # dissipated at the roller's contacts and by its drags [W]
+
+
+def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: float) -> _RollerForces:
+    """The forces on a roller spinning at ``spin`` [rad/s] under the contact loads [N] while the cage turns at
+    ``cage_speed`` [rad/s]."""
+    layout = bearing.layout
+    r, orbit, omega_i = layout.roller_radius, cage_speed * layout.pitch_diameter / 2, bearing.shaft_speed
+    r_i, r_o = layout.inner_radius, layout.outer_radius
+    linear, quadratic, angular = bearing.drag
+    du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
+    u_i = 0.5 * ((omega_i - cage_speed) * r_i + (cage_speed - spin) * r)
+    u_o = 0.5 * (cage_speed * r_o + (cage_speed - spin) * r)
+    f_i = _traction(layout.inner_law, du_i, u_i, q_i)
+    f_o = _traction(layout.outer_law, du_o, u_o, q_o)
+    m_i = _rolling_resistance(layout.inner_law, q_i, spin - omega_i, r)
+    m_o = _rolling_resistance(layout.outer_law, q_o, spin, r)
+    drag = (linear + quadratic * abs(orbit)) * orbit
+    loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + angular * spin**2
+    return _RollerForces(-r * f_i + r * f_o + m_i + m_o - angular * spin, f_i, f_o, du_i, du_o, u_i, u_o,
+                         drag - f_i - f_o, -r_i * f_i - m_i, loss)
+
+
+def _loads_around_the_orbit(bearing: _Bearing, cage_speed: float, phases: int):
+    """Roller azimuths ψ [rad] in [0, 2π), sorted, and the inner and outer contact loads [N] there, from the
+    load distribution with roller 0 at ``phases`` offsets across one roller pitch."""
+    layout = bearing.layout
+    equivalent_shaft = cage_speed / epicyclic_cage_speed(1.0, 2 * layout.roller_radius, layout.pitch_diameter)
+    pitch = 2 * np.pi / len(layout.rollers)
+    solutions = [solve_radial(replace(layout.roller_set(), first_roller_angle=pitch * k / phases), bearing.load,
+                              shaft_speed=equivalent_shaft) for k in range(phases)]
+    psi = np.concatenate([s.roller_angles for s in solutions]) % (2 * np.pi)
+    order = np.argsort(psi)
+    q_i = np.concatenate([s.inner_loads for s in solutions])[order]
+    q_o = np.concatenate([s.outer_loads for s in solutions])[order]
+    return psi[order], q_i, q_o
+
+
+#: Orbit means integrated alongside a roller's spin: pocket force [N], torque on the ring [N m], power loss [W].
+_MEANS = ("pocket_force", "ring_torque", "power_loss")
+
+
+def _spin_around_the_orbit(bearing: _Bearing, cage_speed: float, psi, q_i, q_o):
+    """A roller's spin [rad/s] at the azimuths ψ over its periodic orbit, I dω/dt = M(ω, ψ) with ψ = ω_c t, and
+    the orbit means of :data:`_MEANS`.
+
+    In the load zone the tractions hold the spin at its balance within microseconds; outside it the roller
+    coasts, slowed by the outer raceway's light traction and its drags, for a time comparable with the orbit
+    (a balance at every azimuth would overstate the slip). The orbit starts at the most loaded azimuth, at the
+    spin's balance there, and is made periodic by a secant on the spin it ends with. The means are integrated with the
+    spin, by the same adaptive steps, so that the sharp spin-up where a roller enters the load zone counts in
+    full."""
+    layout = bearing.layout
+    period = 2 * np.pi / cage_speed
+    start = int(np.argmax(q_i))
+    psi_from = np.concatenate([psi[start:], psi[:start] + 2 * np.pi]) - psi[start]
+    loads_i, loads_o = np.roll(q_i, -start), np.roll(q_o, -start)
+    closed = np.append(psi_from, 2 * np.pi)
+
+    def load_at(t, loads):
+        return np.interp((cage_speed * t) % (2 * np.pi), closed, np.append(loads, loads[0]))
+
+    def rate(t, y):
+        forces = _roller(bearing, cage_speed, y[0], load_at(t, loads_i), load_at(t, loads_o))
+        return [forces.moment / layout.roller_inertia, *(getattr(forces, name) for name in _MEANS)]
+
+    def orbit(spin0, times=None):
+        solution = solve_ivp(rate, (0.0, period), [spin0, 0.0, 0.0, 0.0], method="LSODA", rtol=1e-10,
+                             atol=np.array([1e-9, 1e-12, 1e-12, 1e-9]), t_eval=times)
+        if not solution.success:
+            raise ArithmeticError(f"the roller-spin orbit failed at cage speed {cage_speed:g} rad/s: "
+                                  f"{solution.message}")
+        return solution
+
+    middle, half = _rolling_bracket(bearing, cage_speed)
+    spin0 = _bracketed_root(lambda w: _roller(bearing, cage_speed, w, loads_i[0], loads_o[0]).moment, middle, half)
+    # the periodic orbit: a secant on ω(T) − ω(0), from the balance at the start and one orbit on
+    start_spins = [spin0, orbit(spin0).y[0, -1]]
+    gaps = [start_spins[1] - start_spins[0], orbit(start_spins[1]).y[0, -1] - start_spins[1]]
+    while abs(gaps[-1]) > 1e-10 * abs(start_spins[-1]) and len(gaps) < 30:
+        step = gaps[-1] * (start_spins[-1] - start_spins[-2]) / (gaps[-1] - gaps[-2]) if gaps[-1] != gaps[-2] else 0
+        start_spins.append(start_spins[-1] - step)
+        gaps.append(orbit(start_spins[-1]).y[0, -1] - start_spins[-1])
+    periodic = orbit(start_spins[-1], np.append(psi_from / cage_speed, period))
+    return np.roll(periodic.y[0, :-1], start), dict(zip(_MEANS, periodic.y[1:, -1] / period))
+
+
+def _rolling_bracket(bearing: _Bearing, cage_speed: float):
+    """The middle and half width [rad/s] of the spins between rolling on the outer and on the inner raceway."""
+    layout = bearing.layout
+    orbit, r = cage_speed * layout.pitch_diameter / 2, layout.roller_radius
+    on_outer, on_inner = -orbit / r, (orbit - bearing.shaft_speed * layout.inner_radius) / r
+    return 0.5 * (on_outer + on_inner), 0.5 * abs(on_outer - on_inner) + 1.0
+
+
+def _state(bearing: _Bearing, cage_speed: float, phases: int):
+    """(the cage's mean torque [N m], the steady state's fields of :class:`SkiddingSolution`) at the cage
+    speed [rad/s]."""
+    layout = bearing.layout
+    radius, rollers = layout.pitch_diameter / 2, len(layout.rollers)
+    psi, q_i, q_o = _loads_around_the_orbit(bearing, cage_speed, phases)
+    spins, means = _spin_around_the_orbit(bearing, cage_speed, psi, q_i, q_o)
+    rows = _RollerForces(*(np.array(column) for column in zip(*(_roller(bearing, cage_speed, *values)
+                                                                     for values in zip(spins, q_i, q_o)))))
+    # the land carries the cage's weight and, with pocket contacts, their net force −Σ P_j e_θ,j at each phase
+    # (the constraint cage's pockets hold orbital angles about the axis: a pure torque on the cage)
+    pocket = rows.pocket_force
+    net = np.zeros((phases, 2))
+    if bearing.pocket_contacts:
+        net = np.stack([pocket * np.sin(psi), -pocket * np.cos(psi)], axis=1).reshape(rollers, phases, 2).sum(axis=0)
+    normal = np.hypot(*(net + bearing.cage_mass * bearing.gravity).T)
+    land = 0.0
+    if bearing.land_law is not None:
+        land = -bearing.land_law.friction_coefficient * float(np.mean(normal)) * bearing.cage_radius * erf_sign(
+            cage_speed * bearing.cage_radius, bearing.land_law.regularisation_speed)
+    torque = -radius * rollers * means["pocket_force"] + land
+    state = {"roller_angles": psi, "inner_loads": q_i, "outer_loads": q_o, "roller_speeds": spins,
+             "pocket_forces": pocket, "inner_traction": rows.inner_traction, "outer_traction": rows.outer_traction,
+             "inner_sliding": rows.inner_sliding, "outer_sliding": rows.outer_sliding,
+             "inner_rolling": rows.inner_rolling, "outer_rolling": rows.outer_rolling, "land_torque": land,
+             "ring_torque": rollers * means["ring_torque"],
+             "power_loss": rollers * means["power_loss"] - land * cage_speed}
+    return torque, state
+
+
+def _bracketed_root(function, middle: float, half: float) -> float:
+    """The root of a decreasing function of the roller speed, searched in middle ± half, widened until it
+    changes sign (the speeds that roll on either raceway bracket it unless the drags dominate)."""
+    for _ in range(40):
+        low, high = middle - half, middle + half
+        if function(low) >= 0 >= function(high):
+            return brentq(function, low, high, xtol=1e-12 * (abs(middle) + half), rtol=1e-14)
+        half *= 2
+    raise ArithmeticError(f"no roller-speed balance within {middle:g} ± {half:g} rad/s")

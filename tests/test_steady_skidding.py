@@ -1,0 +1,74 @@
+"""The quasi-static skidding balance (bearing_mbs.models.cylindrical_roller.steady_skidding) of the lubricated
+seed bearing.
+
+References, independent of the code under test:
+
+* pure rolling: with no drag, no rolling resistance and no land friction nothing resists the rolling set, so the
+  cage turns at the epicyclic speed ω_i (1 − D_w/D_pw)/2 (closed form): cage slip below 1e-9;
+* the power balance (a conservation law): the power the ring's drive supplies, −ω_i × (the rollers' mean torque
+  on the ring, from the inner tractions and rolling resistance), equals the mean power dissipated by sliding,
+  rolling resistance, drags and the land, to 1e-6 (a wrong sliding or rolling kinematics breaks it);
+* Exudyn, integrating the same scene's equations of motion in time (an independent method: the skidding issue's
+  cross-check), after the run has settled: cage slip within 5 % relative, or 0.1 percentage point where the
+  slip is below 2 %. Exudyn and the reference engine agree to 2 % in tests/test_lubricated_bearing.py.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene, load_spec
+from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
+from bearing_mbs.runner import summarize
+from cases import SCENARIOS
+
+LUBRICATED = ["lubricant.oil=iso_vg_320_mineral", "lubricant.temperature=60", "contact.inner_race.friction_law=ehl",
+              "contact.outer_race.friction_law=ehl", "cage.model=constraint"]
+
+
+def spec_of(*overrides):
+    return load_spec(SCENARIOS / "seed_hss_steady.toml", [*LUBRICATED, *overrides])
+
+
+def test_without_resistance_the_cage_turns_at_the_epicyclic_speed():
+    spec = spec_of("load.radial=6800", "lubricant.model=none", "contact.inner_race.rolling_resistance_arm=0",
+                   "contact.outer_race.rolling_resistance_arm=0", "contact.land.friction_coefficient=0")
+    solution = solve_skidding(build_scene(spec))
+    # the seed-hss preset: D_w = 0.025 m, D_pw = 0.235 m; 1500 rpm
+    assert solution.cage_speed == pytest.approx(1500 * np.pi / 30 * (1 - 0.025 / 0.235) / 2, rel=1e-9)
+    assert abs(solution.cage_slip) < 1e-9
+
+
+@pytest.mark.parametrize("drag", ["palmgren", "churning"])
+@pytest.mark.parametrize("load", [2000.0, 6800.0])
+def test_the_drive_power_equals_the_losses(drag, load):
+    scene = build_scene(spec_of(f"load.radial={load}", f"lubricant.model={drag}"))
+    solution = solve_skidding(scene)
+    supplied = -solution.ring_torque * scene.bodies[0].velocity[2]
+    assert supplied > 0
+    assert solution.power_loss == pytest.approx(supplied, rel=1e-6)
+
+
+CROSS_CHECKS = {  # (drag model, load [N], run end [s]): each settled by then (window halves within 0.5 %)
+    "nominal, Palmgren drag": ("palmgren", 68000.0, 0.1),
+    "light, Palmgren drag": ("palmgren", 6800.0, 0.3),
+    "light, churning drag": ("churning", 6800.0, 0.3),
+}
+
+
+@pytest.mark.parametrize("case", CROSS_CHECKS)
+def test_exudyn_settles_on_the_quasi_static_slip(case):
+    drag, load, end = CROSS_CHECKS[case]
+    spec = spec_of(f"lubricant.model={drag}", f"load.radial={load}", f"scenario.end_time={end}",
+                   f"analysis.start={end - 0.1 if end > 0.1 else 0.05}")
+    scene = build_scene(spec)
+    result = simulate(scene, spec.solver, spec.scenario.end_time)
+    assert result.success, result.message
+    dynamic = summarize(spec, scene, result)["cage_slip"]
+    steady = solve_skidding(scene).cage_slip
+    if max(dynamic, steady) < 0.02:
+        assert abs(dynamic - steady) < 0.001
+    else:
+        assert steady == pytest.approx(dynamic, rel=0.05)
