@@ -188,3 +188,21 @@ def test_light_load_traction_is_far_below_the_heavy_load_traction():
     heavy = traction.ehl_traction(row(), s * u, u, 18800.0, 0.1, 0.01)[0]
     light = traction.ehl_traction(row(), s * u, u, 300.0, 0.1, 0.01)[0]
     assert heavy > 10 * light > 0
+
+
+@pytest.mark.parametrize("load", [300.0, 2000.0, 18800.0])
+@pytest.mark.parametrize("speed", [0.5, 9.0])
+def test_the_zero_slip_slope_blends_the_boundary_and_film_slopes(load, speed):
+    """The step advisor's friction damping Q dμ/dΔu: at zero slip dμ/dΔu = ψ μ_b (4/√π)/v_reg (the derivative
+    of erf(2Δu/v_reg)) + (1 − ψ) (dμ_f/ds)/u, with the series slope of Johnson & Tevaarwerk (closed form above)
+    on the film the law uses, max(h_c, σ). 1e-5 relative."""
+    mu_b, v_reg = 0.1, 0.01
+    w = load / SEED["length"]
+    central, minimum = ehl.film_thickness(0, speed, w, SEED["eta"], SEED["alpha"], SEED["modulus"], SEED["radius"])
+    share = traction.asperity_share(minimum / SEED["roughness"])
+    mean_pressure, half_width = contact_state(load)
+    h = max(central, SEED["roughness"])
+    eta_bar = SEED["eta"] * math.exp(SEED["alpha"] * mean_pressure)
+    film_slope = 1 / (mean_pressure * h / (eta_bar * speed) + mean_pressure * h / (1e8 * half_width)) / speed
+    expected = share * mu_b * 4 / math.sqrt(math.pi) / v_reg + (1 - share) * film_slope
+    assert traction.zero_slip_slope(row(), speed, load, mu_b, v_reg) == pytest.approx(expected, rel=1e-5)

@@ -128,3 +128,13 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
         fluid = curve_traction(slip / speed, row[_CURVE_A], row[_CURVE_B], row[_CURVE_C], row[_CURVE_D])
     boundary = boundary_coefficient * math.erf(2.0 * slip / regularisation_speed)
     return share * boundary + (1.0 - share) * fluid, minimum, film_parameter
+
+
+def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisation_speed):
+    """dμ/dΔu [s/m] of :func:`ehl_traction` at zero slip, where its traction curve is steepest: the friction
+    damping Q dμ/dΔu that bounds an explicit step (a centred difference over ±10⁻⁷ v_reg, inside the linear
+    range of both the boundary and the film branch even at the heaviest loads)."""
+    step = 1e-7 * regularisation_speed
+    ahead = ehl_traction(row, step, rolling, normal_force, boundary_coefficient, regularisation_speed)[0]
+    behind = ehl_traction(row, -step, rolling, normal_force, boundary_coefficient, regularisation_speed)[0]
+    return (ahead - behind) / (2 * step)

@@ -53,6 +53,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearing_mbs.contact.friction import ZERO_SLIP_SLOPE
+from bearing_mbs.contact.traction import zero_slip_slope
 from bearing_mbs.contact.line_contact import power_law_stiffness
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import Drag, Load, VelocityServo
@@ -108,7 +109,8 @@ def linearise(scene: Scene) -> Linearisation | None:
 @dataclass(frozen=True)
 class BearingLayout:
     """What the linearisation reads from a bearing scene: geometry [m], masses [kg], inertias [kg m²], raceway
-    laws, servo gain [N m s], speeds [rad/s], roller drag (linear [N s/m], angular [N m s])."""
+    laws, servo gain [N m s], highest ring speed [rad/s], initial orbit speed [rad/s], roller drag (linear
+    [N s/m], angular [N m s]) and lowest ring speed [rad/s]."""
 
     scene: Scene
     ring: int
@@ -127,6 +129,7 @@ class BearingLayout:
     shaft_speed: float
     initial_orbit_speed: float
     roller_drag: tuple[float, float] = (0.0, 0.0)
+    lowest_speed: float = 0.0
 
     @classmethod
     def of(cls, scene: Scene) -> BearingLayout | None:
@@ -151,12 +154,20 @@ class BearingLayout:
         drag = (sum(d.linear + 2 * d.quadratic * orbit_speed for d in drags), sum(d.angular for d in drags))
         return cls(scene, ring, ring_body.name, ring_body.mass, ring_body.inertia, rollers, roller.mass,
                    roller.inertia, inner_pairs[0].radius_b, inner_pairs[0].radius_a, outer_pair.radius_a,
-                   inner_pairs[0].law, outer_pair.law, sum(d.gain for d in servos), max(speeds), abs(orbit), drag)
+                   inner_pairs[0].law, outer_pair.law, sum(d.gain for d in servos), max(speeds), abs(orbit), drag,
+                   min(speeds))
 
     @property
     def pitch_diameter(self) -> float:
         """D_pw [m]: the mean of the raceway diameters."""
         return self.inner_radius + self.outer_radius
+
+    def rolling_speeds(self) -> tuple[float, float]:
+        """The raceways' slowest and fastest rolling speeds [m/s] of the run, (ω_i − ω_c) r_i at its lowest and
+        highest ring speed with the cage at its epicyclic speed."""
+        speeds = (self.lowest_speed, self.shaft_speed)
+        return tuple(float((w - epicyclic_cage_speed(w, 2 * self.roller_radius, self.pitch_diameter))
+                           * self.inner_radius) for w in speeds)
 
     @property
     def clearance(self) -> float:
@@ -267,7 +278,11 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
 
     def friction(law, load):
         slope = ZERO_SLIP_SLOPE[law.friction_law] / law.regularisation_speed
-        return law.friction_coefficient * load * slope, law.rolling_resistance_arm * load * slope * r
+        damping = law.friction_coefficient * load * slope
+        if law.friction_law == "ehl" and load > 0:  # the film's slope, steepest at the slowest rolling
+            damping = load * max(zero_slip_slope(np.asarray(law.traction), speed, load, law.friction_coefficient,
+                                                 law.regularisation_speed) for speed in layout.rolling_speeds())
+        return damping, law.rolling_resistance_arm * load * slope * r
 
     ci, ri = friction(layout.inner_law, inner_load)
     co, ro = friction(layout.outer_law, outer_load)
