@@ -15,6 +15,7 @@ from cases import SCENARIOS
 
 STEADY = str(SCENARIOS / "seed_hss_steady.toml")
 BALLS = str(SCENARIOS / "seed_case1.toml")
+LUBRICATED = str(SCENARIOS / "seed_hss_lubricated.toml")
 SHORT = ["--set", "scenario.end_time=0.002", "--set", "analysis.start=0.001"]
 
 ROWS = {
@@ -35,6 +36,14 @@ ROWS = {
                                          "--set", "analysis.start=0.01"],
                                         "convergence.end"),
     "stiffness of a balls scenario": (["stiffness", BALLS, "--out", "{out}"], "scenario.model"),
+    # Exudyn's explicit ladders of the study cannot run a constraint cage: refused before the reference runs
+    "explicit Exudyn on a constraint cage": (["convergence", STEADY, "--out", "{out}", "--set", "cage.model=constraint"],
+                                             "solver.exudyn.method"),
+    "skidding map of a dry scenario": (["skidding-map", STEADY, "--out", "{out}"], "lubricant.temperature"),
+    "skidding map beyond the oil's fit": (["skidding-map", LUBRICATED, "--out", "{out}", "--temperatures", "40,150"],
+                                          "lubricant.temperature"),
+    "minimum-load band upside down": (["skidding-map", LUBRICATED, "--out", "{out}", "--minimum-load", "9000,4000"],
+                                      "--minimum-load"),
 }
 
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from bearing_mbs.contact.lubricant import PRESETS as LUBRICANTS
 from bearing_mbs.engines import simulate
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
@@ -41,6 +42,17 @@ def test_without_resistance_the_cage_turns_at_the_epicyclic_speed():
     assert abs(solution.cage_slip) < 1e-9
 
 
+def test_a_weightless_cage_on_its_land_film_feels_petroffs_torque():
+    """Centred (no weight, constraint pockets put no force on it), the film's torque is Petroff's closed form
+    2π η Ω R³ L / C: R = (0.245 + 0.004)/2 m, L = 0.071 − 0.055 m (the side rings), C = 0.5 mm / 2; η is the
+    preset oil's at 60 °C (its viscosity law is checked in tests/test_lubricant.py). 1e-9 relative."""
+    spec = spec_of("load.radial=6800", "scenario.gravity=0", "lubricant.land_film=true", "bearing.cage_width=0.071")
+    solution = solve_skidding(build_scene(spec))
+    eta = LUBRICANTS["iso_vg_320_mineral"].dynamic_viscosity(60.0)
+    petroff = 2 * np.pi * eta * solution.cage_speed * 0.1245**3 * 0.016 / 2.5e-4
+    assert solution.land_torque == pytest.approx(-petroff, rel=1e-9)
+
+
 @pytest.mark.parametrize("drag", ["palmgren", "churning"])
 @pytest.mark.parametrize("load", [2000.0, 6800.0])
 def test_the_drive_power_equals_the_losses(drag, load):
@@ -51,18 +63,19 @@ def test_the_drive_power_equals_the_losses(drag, load):
     assert solution.power_loss == pytest.approx(supplied, rel=1e-6)
 
 
-CROSS_CHECKS = {  # (drag model, load [N], run end [s]): each settled by then (window halves within 0.5 %)
-    "nominal, Palmgren drag": ("palmgren", 68000.0, 0.1),
-    "light, Palmgren drag": ("palmgren", 6800.0, 0.3),
-    "light, churning drag": ("churning", 6800.0, 0.3),
+CROSS_CHECKS = {  # (overrides, run end [s]): each settled by then (window halves within 0.5 %)
+    "nominal, Palmgren drag": (["lubricant.model=palmgren", "load.radial=68000"], 0.1),
+    "light, Palmgren drag": (["lubricant.model=palmgren", "load.radial=6800"], 0.3),
+    "light, churning drag": (["lubricant.model=churning", "load.radial=6800"], 0.3),
+    "light, churning drag, land film": (["lubricant.model=churning", "load.radial=6800", "lubricant.land_film=true",
+                                         "bearing.cage_width=0.071"], 0.3),
 }
 
 
 @pytest.mark.parametrize("case", CROSS_CHECKS)
 def test_exudyn_settles_on_the_quasi_static_slip(case):
-    drag, load, end = CROSS_CHECKS[case]
-    spec = spec_of(f"lubricant.model={drag}", f"load.radial={load}", f"scenario.end_time={end}",
-                   f"analysis.start={end - 0.1 if end > 0.1 else 0.05}")
+    overrides, end = CROSS_CHECKS[case]
+    spec = spec_of(*overrides, f"scenario.end_time={end}", f"analysis.start={end - 0.1 if end > 0.1 else 0.05}")
     scene = build_scene(spec)
     result = simulate(scene, spec.solver, spec.scenario.end_time)
     assert result.success, result.message

@@ -1,5 +1,5 @@
 """Subcommands of the studies: ``convergence``, ``numerics-report``, ``stability``, ``static-check``,
-``skidding`` and ``cage-models``."""
+``skidding``, ``skidding-map`` and ``cage-models``."""
 
 from __future__ import annotations
 
@@ -15,9 +15,11 @@ def register(commands) -> dict:
     _add_numerics_report(commands)
     _add_static_check(commands)
     _add_skidding(commands)
+    _add_skidding_map(commands)
     _add_cage_models(commands)
     return {"convergence": _convergence, "stability": _stability, "numerics-report": _numerics_report,
-            "static-check": _static_check, "skidding": _skidding, "cage-models": _cage_models}
+            "static-check": _static_check, "skidding": _skidding, "skidding-map": _skidding_map,
+            "cage-models": _cage_models}
 
 
 def _add_convergence(commands) -> None:
@@ -171,6 +173,42 @@ def _skidding(args) -> int:
     print(skidding.markdown_table(sweeps))
     print(skidding.trend_text(sweeps) + f"-> {args.out}")
     return exit_code([row["status"] for rows in sweeps.values() for row in rows])
+
+
+def _add_skidding_map(commands) -> None:
+    parser = commands.add_parser("skidding-map", help="steady cage and roller slip over load x oil temperature x "
+                                 "speed, from the quasi-static skidding balance")
+    parser.add_argument("scenario", help="lubricated bearing scenario TOML file at constant speed")
+    add_output(parser, "output directory: skidding_map.{csv,md,png} and roller_slip.png (new or empty, or give "
+                       "--overwrite)")
+    parser.add_argument("--loads", default="68000,6800,2000,680,200", help="comma-separated radial loads [N]")
+    parser.add_argument("--temperatures", default="40,60,80", help="comma-separated oil temperatures [°C]")
+    parser.add_argument("--speeds", default="1000,1500,1800", help="comma-separated shaft speeds [rpm]")
+    parser.add_argument("--minimum-load", default=None,
+                        help="LOW,HIGH [N]: the catalogue minimum-load band to mark on the figure")
+    add_overrides(parser, "override any spec field of the base scenario (repeatable)")
+    parser.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def _skidding_map(args) -> int:
+    """Exit 0: every point solved; 1: some had no balance (all are written); 2: bad input, nothing ran."""
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.studies import skidding_map
+
+    band = None
+    if args.minimum_load is not None:
+        band = numbers("--minimum-load", args.minimum_load)
+        if len(band) != 2 or not 0 < band[0] < band[1]:
+            raise SpecError("--minimum-load", args.minimum_load, "LOW,HIGH [N] with 0 < LOW < HIGH")
+    spec = load_spec(args.scenario, args.set)
+    loads, temperatures, speeds = (numbers(name, text) for name, text in (
+        ("--loads", args.loads), ("--temperatures", args.temperatures), ("--speeds", args.speeds)))
+    skidding_map.check_grid(spec, loads, temperatures, speeds)
+    rows = skidding_map.run(spec, output_directory(args), loads, temperatures, speeds, band,
+                            figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
+    print(skidding_map.markdown_table(rows) + f"-> {args.out}")
+    return 0 if all(row["status"] == "success" for row in rows) else 1
 
 
 def _add_cage_models(commands) -> None:

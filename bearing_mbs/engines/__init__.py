@@ -30,6 +30,15 @@ def simulate(scene: Scene, solver: SolverSpec, end_time: float, progress: Progre
     return _simulate(scene, solver, end_time, progress, spec, request)
 
 
+def check_supported(scene: Scene, solver: SolverSpec) -> None:
+    """Raise :class:`~bearing_mbs.spec.SpecError` before anything runs if the engine cannot run ``scene`` with
+    ``solver`` (e.g. Exudyn's explicit solvers and a scene with constraints); the reference engine runs all."""
+    if solver.engine == "exudyn":
+        from bearing_mbs.engines.exudyn.engine import check_supported as exudyn_check
+
+        exudyn_check(scene, solver)
+
+
 def _simulate(scene, solver, end_time, progress, spec, stop) -> Result:
     if solver.engine == "reference":
         from bearing_mbs.engines.reference.engine import simulate_reference
@@ -40,4 +49,4 @@ def _simulate(scene, solver, end_time, progress, spec, stop) -> Result:
     return simulate_exudyn(scene, solver, end_time, progress, spec, stop)
 
 
-__all__ = ["simulate"]
+__all__ = ["check_supported", "simulate"]

@@ -30,7 +30,7 @@ import numpy as np
 
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
-from bearing_mbs.engines import simulate
+from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models import build_scene
@@ -121,6 +121,10 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
         raise SpecError("convergence.end", settings.end, f"<= the scenario's end time {spec.scenario.end_time:g} s")
     if spec.scenario.model == "balls" and settings.norm in BEARING_NORMS:
         raise SpecError("convergence.norm", settings.norm, "the balls model has the positions norm only")
+
+    for run in (settings.reference, *([settings.check] if settings.check is not None else []), *settings.runs):
+        for step, tolerance in ladder(run):  # every setting the scene cannot run is refused before the first run
+            check_supported(scene, solver_for(spec, run, tolerance if run.adaptive else step))
 
     progress = progress or ProgressMeter()
     total = 1 + (settings.check is not None) + sum(len(ladder(run)) for run in settings.runs)

@@ -35,6 +35,7 @@ from bearing_mbs.contact.traction import TRACTION_COLUMNS, TRACTION_MODELS
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, Profile, Scene
 from bearing_mbs.core.topology import Topology
 from bearing_mbs.elements import Drag, Load, VelocityServo
+from bearing_mbs.elements.journal_bearings import JournalFilm
 from bearing_mbs.models.building import initial_gaps, pair_law
 from bearing_mbs.models.cylindrical_roller.drivetrain import (
     RPM,
@@ -136,13 +137,14 @@ def build_bearing_scene(spec: Spec) -> Scene:
     coefficients = roller_drag(spec, geometry)
     drags = tuple(Drag(f"roller{k}-drag", first_roller + k, **{"linear": 0.0, **coefficients})
                   for k in range(geometry.rollers) if coefficients)
+    films = (land_film(spec, geometry),) if spec.lubricant.land_film else ()
     roles = {"inner_ring": [INNER_RING], "rollers": list(range(first_roller, first_roller + geometry.rollers))}
     if caged:
         roles["cage"] = [CAGE]
     if groups["pocket"]:
         groups["pocket"] = np.reshape(groups["pocket"], (geometry.rollers, -1))
     topology = Topology(bodies=roles, pairs={group: indices for group, indices in groups.items() if len(indices)})
-    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), (*loads, *drives, *drags),
+    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), (*loads, *drives, *drags, *films),
                   gravity=(0.0, -spec.scenario.gravity), topology=topology)
     _reject_initial_overlap(scene, geometry)
     return scene
@@ -171,6 +173,16 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
                                       geometry.pitch_diameter)
     linear = roller_drag_coefficient(moment, inner_speed, geometry.rollers, geometry.pitch_diameter, cage_speed)
     return {"linear": linear} if linear > 0 else {}
+
+
+def land_film(spec: Spec, geometry: BearingGeometry) -> JournalFilm:
+    """The cage–land oil film: a short journal bearing between the cage and the outer ring's land, as wide as the
+    cage's side rings, of the land's radial clearance, in the oil at its operating temperature."""
+    lubricant = spec.lubricant
+    return JournalFilm("cage-land-film", CAGE, 1, geometry.cage_outer_radius,
+                       spec.bearing.cage_width - geometry.roller_length,
+                       geometry.outer_land_radius - geometry.cage_outer_radius,
+                       lubricant.lubricant().dynamic_viscosity(lubricant.temperature))
 
 
 def load_profile(spec: Spec) -> Profile:

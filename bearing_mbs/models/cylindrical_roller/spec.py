@@ -365,6 +365,11 @@ class LubricantSpec:
       its temperature. oil_fraction in (0, 1]: the oil's volume fraction in the bearing cavity (default 0.05, our
       choice: no measurement of the seed bearing's cavity is at hand, so sweep it). reference_rpm: the speed at
       which the drag coefficient's Reynolds number is taken (default: the drive's highest speed).
+
+    land_film (default false): the cage rides on an oil film on the outer ring's land, a short journal bearing
+    (:mod:`bearing_mbs.fluid_film`) of the land clearance, as wide as the cage's side rings together
+    (cage_width − roller_length), in the oil at ``temperature``; it carries the cage and shears at the cage's speed.
+    The dry land contact stays, for metal contact should the film collapse.
     """
 
     model: str = "palmgren"
@@ -381,6 +386,7 @@ class LubricantSpec:
     thermal_conductivity: float | None = None
     temperature: float | None = None
     oil_fraction: float = 0.05
+    land_film: bool = False
 
     def __post_init__(self):
         one_of("model", self.model, DRAG_MODELS)
@@ -546,11 +552,27 @@ class BearingModelSpec(Spec):
             if lubricated and self.lubricant.temperature is None:
                 raise SpecError("lubricant.temperature", None, f"contact.{group} uses friction_law = 'ehl', which "
                                 "needs the oil and its operating temperature [°C] in [lubricant]")
+        if self.lubricant.land_film:
+            self._check_land_film()
         start, end = self.analysis.start, self.scenario.end_time
         if start is not None and not start < end:
             log.warning("analysis.start = %g s is not before scenario.end_time = %g s: the window starts at half the "
                         "end time, %g s, instead (analysis.start_fraction scales with the run)", start, end, end / 2)
             object.__setattr__(self, "analysis", replace(self.analysis, start=None))
+
+
+    def _check_land_film(self):
+        """The cage–land film needs the oil at its temperature, a cage on the outer ring's land, and side rings."""
+        bearing = self.bearing
+        require(self.lubricant.temperature is not None, "lubricant.temperature", None,
+                "the cage-land film (land_film = true) needs the oil and its operating temperature [°C]")
+        require(bearing.cage_guidance == "outer_land", "bearing.cage_guidance", bearing.cage_guidance,
+                "'outer_land' for the cage-land film (land_film = true): the film is a journal bearing between the "
+                "cage and the stationary outer ring")
+        require(self.cage.model != "none", "cage.model", self.cage.model, "a cage for the cage-land film")
+        require(bearing.cage_width > bearing.roller_length, "bearing.cage_width", bearing.cage_width,
+                f"> roller_length = {bearing.roller_length:g} m for the cage-land film: the land runs on the side "
+                "rings beside the pockets, cage_width − roller_length wide")
 
 
 def with_preset(data: dict) -> dict:

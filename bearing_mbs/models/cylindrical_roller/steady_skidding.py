@@ -24,7 +24,9 @@ Each roller's spin follows :math:`I\dot\omega_j = -r F_i + r F_o + M_{R,i} + M_{
 its orbit (:math:`\psi = \omega_c t`, periodic): held at its balance in the load zone, coasting outside it. Its
 tangential balance gives the pocket force on it, :math:`P_j = (c + c_2 v) v - F_i - F_o`. The cage's torque
 balance, averaged over the orbit (the cage's inertia filters the pitch's ripple), fixes :math:`\omega_c`:
-:math:`\langle -R\sum_j P_j\rangle - \mu_l N r_c\,\varphi(\omega_c r_c) = 0`, with N the land's normal force,
+:math:`\langle -R\sum_j P_j\rangle + T_l = 0`: the land's torque :math:`T_l = -\mu_l N r_c\,\varphi(\omega_c r_c)` dry, or
+the Couette torque of its oil film (a short journal bearing, :mod:`bearing_mbs.fluid_film`) at the eccentricity
+where the film carries N. N is the land's normal force,
 the magnitude of the cage's weight plus, with pocket contacts, :math:`-\sum_j P_j e_{\theta,j}` (the constraint
 cage holds each roller's orbital angle about the axis, so its pockets put a torque on the cage and no force).
 
@@ -47,6 +49,8 @@ from bearing_mbs.contact.friction import erf_sign
 from bearing_mbs.contact.traction import ehl_traction
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
+from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalFilm
+from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
 from bearing_mbs.models.cylindrical_roller.linearise import BearingLayout
 from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
@@ -99,6 +103,7 @@ class _Bearing:
     land_law: object | None
     gravity: np.ndarray
     pocket_contacts: bool
+    land_film: JournalFilm | None
 
 
 def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
@@ -127,12 +132,14 @@ def _read(scene: Scene) -> _Bearing:
     if np.ptp(applied, axis=0).max() > 0:
         raise SpecError("load", "varies in time", "a constant load for a steady state")
     drags = [d for d in scene.items_of(Drag) if d.body == layout.rollers[0]]
-    cage = scene.bodies[int(scene.topology.bodies["cage"][0])]
+    cage_index = int(scene.topology.bodies["cage"][0])
+    cage = scene.bodies[cage_index]
     land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
     return _Bearing(layout, layout.shaft_speed, applied[-1],
                     (sum(d.linear for d in drags), sum(d.quadratic for d in drags), sum(d.angular for d in drags)),
                     cage.mass, land.radius_b if land is not None else 0.0, land.law if land is not None else None,
-                    np.asarray(scene.gravity, float), not any(isinstance(c, OrbitConstraint) for c in scene.constraints))
+                    np.asarray(scene.gravity, float), not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
+                    next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None))
 
 
 def _traction(law, sliding, rolling, load):
@@ -273,7 +280,9 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
         net = np.stack([pocket * np.sin(psi), -pocket * np.cos(psi)], axis=1).reshape(rollers, phases, 2).sum(axis=0)
     normal = np.hypot(*(net + bearing.cage_mass * bearing.gravity).T)
     land = 0.0
-    if bearing.land_law is not None:
+    if bearing.land_film is not None:
+        land = float(np.mean([_film_torque(bearing.land_film, cage_speed, load) for load in normal]))
+    elif bearing.land_law is not None:
         land = -bearing.land_law.friction_coefficient * float(np.mean(normal)) * bearing.cage_radius * erf_sign(
             cage_speed * bearing.cage_radius, bearing.land_law.regularisation_speed)
     torque = -radius * rollers * means["pocket_force"] + land
@@ -284,6 +293,18 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
              "ring_torque": rollers * means["ring_torque"],
              "power_loss": rollers * means["power_loss"] - land * cage_speed}
     return torque, state
+
+
+def _film_torque(film: JournalFilm, speed: float, load: float) -> float:
+    """The land film's torque [N m] on the cage turning at ``speed`` [rad/s] and carrying ``load`` [N]: at the
+    steady eccentricity where the short bearing's force equals the load."""
+    def capacity(eps):
+        return math.hypot(*short_bearing_force(eps * film.clearance, 0.0, 0.0, 0.0, speed, film.radius, film.length,
+                                               film.clearance, film.viscosity)) - load
+
+    eps = 0.0 if load <= 0 else brentq(capacity, 0.0, LARGEST_ECCENTRICITY) if capacity(LARGEST_ECCENTRICITY) > 0 \
+        else LARGEST_ECCENTRICITY
+    return film.count * short_bearing_torque(eps, speed, film.radius, film.length, film.clearance, film.viscosity)
 
 
 def _bracketed_root(function, middle: float, half: float) -> float:

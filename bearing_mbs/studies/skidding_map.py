@@ -1,0 +1,175 @@
+r"""Steady skidding over load × oil temperature × speed, from the quasi-static skidding balance.
+
+``bearing-mbs skidding-map SCENARIO.toml --out DIR`` solves
+:func:`~bearing_mbs.models.cylindrical_roller.steady_skidding.solve_skidding` for the base scenario (a lubricated
+bearing at constant speed, e.g. ``scenarios/seed_hss_lubricated.toml``) at every radial load, oil temperature and
+shaft speed given, a few seconds each where a dynamic run at light load needs seconds of simulated time to settle
+(docs/skidding.md). It writes
+
+* ``skidding_map.csv`` and ``skidding_map.md``: a row per point (:data:`COLUMNS`);
+* ``skidding_map.png``: cage slip against the total radial load, a panel per speed and a curve per temperature,
+  with the catalogue minimum-load band when one is given;
+* ``roller_slip.png``: the rollers' slide-to-roll ratio at the inner and outer raceway around the orbit, in and
+  out of the load zone, at each load (base speed and temperature).
+
+The slide-to-roll ratio of a contact is Δu/u (sliding over rolling speed), positive where the roller's surface
+runs ahead of the raceway's.
+"""
+
+from __future__ import annotations
+
+import csv
+import logging
+import time
+from pathlib import Path
+
+import numpy as np
+
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.io.figures import new_figure, save_figure
+from bearing_mbs.models import build_scene
+from bearing_mbs.models.cylindrical_roller.steady_skidding import SkiddingSolution, solve_skidding
+from bearing_mbs.spec import Spec, SpecError
+from bearing_mbs.spec.fields import positive
+from bearing_mbs.studies.common import with_overrides
+from bearing_mbs.studies.skidding import total_radial_load
+
+log = logging.getLogger(__name__)
+
+#: Output file names (in the output directory).
+CSV_FILE, TABLE_FILE, FIGURE_FILE, ROLLER_FILE = ("skidding_map.csv", "skidding_map.md", "skidding_map.png",
+                                                  "roller_slip.png")
+COLUMNS = ("speed_rpm", "temperature", "radial_load", "total_load", "cage_slip", "max_inner_slide_to_roll",
+           "max_outer_slide_to_roll_unloaded", "friction_torque", "power_loss", "land_torque", "wall_time_s",
+           "status")
+
+
+def check_grid(base: Spec, loads, temperatures, speeds) -> None:
+    """Raise :class:`SpecError` before anything runs unless the grid is usable."""
+    if base.scenario.model != "bearing":
+        raise SpecError("scenario.model", base.scenario.model, "the skidding map varies a bearing scenario")
+    if base.lubricant.temperature is None:
+        raise SpecError("lubricant.temperature", None, "the skidding map varies a lubricated scenario: give the "
+                        "oil and its temperature in [lubricant]")
+    for name, values in (("--loads", loads), ("--temperatures", temperatures), ("--speeds", speeds)):
+        if not values:
+            raise SpecError(name, values, "at least one value is needed")
+    for load in loads:
+        positive("--loads", load)
+    for speed in speeds:
+        positive("--speeds", speed)
+    for speed in speeds:  # validate every variant before the first solve
+        for temperature in temperatures:
+            with_overrides(base, {"drive.speed_rpm": float(speed), "lubricant.temperature": float(temperature)})
+
+
+def point(base: Spec, speed: float, temperature: float, load: float) -> tuple[dict, SkiddingSolution | None]:
+    """One row of the map and its solution (None where the balance has no solution; the row says why)."""
+    spec = with_overrides(base, {"drive.speed_rpm": float(speed), "lubricant.temperature": float(temperature),
+                                 "load.radial": float(load)})
+    row = {"speed_rpm": speed, "temperature": temperature, "radial_load": load, "total_load": total_radial_load(spec)}
+    start = time.perf_counter()
+    try:
+        solution = solve_skidding(build_scene(spec))
+    except (ArithmeticError, SpecError) as error:
+        log.warning("no skidding balance at %g rpm, %g °C, %g N: %s", speed, temperature, load, error)
+        nan = float("nan")
+        row.update(cage_slip=nan, max_inner_slide_to_roll=nan, max_outer_slide_to_roll_unloaded=nan,
+                   friction_torque=nan, power_loss=nan, land_torque=nan, status=f"failed: {error}")
+        row["wall_time_s"] = time.perf_counter() - start
+        return row, None
+    loaded = solution.inner_loads > 0
+    inner = np.abs(solution.inner_sliding / solution.inner_rolling)[loaded]
+    outer = np.abs(solution.outer_sliding / solution.outer_rolling)[~loaded]
+    row.update(cage_slip=solution.cage_slip, max_inner_slide_to_roll=float(inner.max()) if inner.size else 0.0,
+               max_outer_slide_to_roll_unloaded=float(outer.max()) if outer.size else 0.0,
+               friction_torque=-solution.ring_torque, power_loss=solution.power_loss,
+               land_torque=solution.land_torque, wall_time_s=time.perf_counter() - start, status="success")
+    return row, solution
+
+
+def run(base: Spec, directory: str | Path, loads, temperatures, speeds, minimum_load=None, figures: bool = True,
+        progress: ProgressMeter | None = None) -> list[dict]:
+    """Solve every point, write the outputs into ``directory`` and return the rows. ``minimum_load``: the
+    catalogue minimum-load band (low, high) [N] to mark, or None."""
+    check_grid(base, loads, temperatures, speeds)
+    progress = progress or ProgressMeter()
+    grid = [(s, t, f) for s in speeds for t in temperatures for f in loads]
+    rows, profiles = [], {}
+    for k, (speed, temperature, load) in enumerate(grid):
+        progress.next_run(k + 1, len(grid))
+        row, solution = point(base, speed, temperature, load)
+        rows.append(row)
+        if solution is not None and speed == speeds[0] and temperature == temperatures[0]:
+            profiles[load] = solution
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    with (directory / CSV_FILE).open("w", newline="") as handle:
+        writer = csv.DictWriter(handle, COLUMNS)
+        writer.writeheader()
+        writer.writerows(rows)
+    (directory / TABLE_FILE).write_text(markdown_table(rows))
+    if figures:
+        title = f"{base.scenario.name}: quasi-static skidding balance"
+        plot_map(rows, directory / FIGURE_FILE, minimum_load, title)
+        if profiles:
+            plot_roller_slip(profiles, directory / ROLLER_FILE,
+                             f"{base.scenario.name}: {speeds[0]:g} rpm, oil at {temperatures[0]:g} °C")
+    return rows
+
+
+def markdown_table(rows: list[dict]) -> str:
+    """Cage slip [%] by load (rows) and speed × temperature (columns), then the friction torque [N m]."""
+    keys = sorted({(row["speed_rpm"], row["temperature"]) for row in rows})
+    loads = sorted({row["radial_load"] for row in rows}, reverse=True)
+    value = {(row["speed_rpm"], row["temperature"], row["radial_load"]): row for row in rows}
+    lines = []
+    for title, field, scale in (("cage slip [%]", "cage_slip", 100.0), ("friction torque [N m]", "friction_torque", 1.0)):
+        lines += [f"{title}:", "", "| radial load [N] | " + " | ".join(f"{s:g} rpm, {t:g} °C" for s, t in keys) + " |",
+                  "|---:|" + "---:|" * len(keys)]
+        for load in loads:
+            cells = [f"{scale * value[(s, t, load)][field]:.3g}" for s, t in keys]
+            lines.append(f"| {load:g} | " + " | ".join(cells) + " |")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def plot_map(rows: list[dict], path: Path, minimum_load, title: str = "") -> Path:
+    speeds = sorted({row["speed_rpm"] for row in rows})
+    temperatures = sorted({row["temperature"] for row in rows})
+    figure, axes = new_figure(1, len(speeds), figsize=(4.2 * len(speeds), 4.2), sharey=True, squeeze=False)
+    for axis, speed in zip(axes[0], speeds):
+        for n, temperature in enumerate(temperatures):
+            chosen = sorted((row for row in rows if row["speed_rpm"] == speed and row["temperature"] == temperature),
+                            key=lambda row: row["total_load"])
+            axis.plot([row["total_load"] for row in chosen], [100 * row["cage_slip"] for row in chosen], "o-",
+                      color=f"C{n}", label=f"oil at {temperature:g} °C")
+        if minimum_load is not None:
+            axis.axvspan(*minimum_load, color="0.85", zorder=0, label="catalogue minimum load")
+        axis.set_xscale("log")
+        axis.set_yscale("log")
+        axis.set_title(f"{speed:g} rpm")
+        axis.set_xlabel("total radial load [N]")
+        axis.grid(True, which="both", alpha=0.3)
+    axes[0][0].set_ylabel("cage slip [%]")
+    axes[0][0].legend(fontsize="small", loc="lower left")
+    figure.suptitle(title)
+    return save_figure(figure, path, dpi=100)
+
+
+def plot_roller_slip(profiles: dict[float, SkiddingSolution], path: Path, title: str = "") -> Path:
+    figure, (inner, outer) = new_figure(2, 1, figsize=(6.5, 6.0), sharex=True)
+    for n, (load, solution) in enumerate(sorted(profiles.items(), reverse=True)):
+        degrees = np.degrees(solution.roller_angles)
+        inner.plot(degrees, solution.inner_sliding / solution.inner_rolling, color=f"C{n}", label=f"{load:g} N")
+        outer.plot(degrees, solution.outer_sliding / solution.outer_rolling, color=f"C{n}")
+        loaded = np.where(solution.inner_loads > 0, 1.0, np.nan)
+        inner.plot(degrees, loaded * solution.inner_sliding / solution.inner_rolling, color=f"C{n}", linewidth=3)
+    inner.set_ylabel("inner raceway\nslide-to-roll [-]")
+    outer.set_ylabel("outer raceway\nslide-to-roll [-]")
+    outer.set_xlabel("roller azimuth [deg] (thick: in the load zone)")
+    inner.legend(fontsize="small", title="radial load")
+    for axis in (inner, outer):
+        axis.grid(True, alpha=0.3)
+    inner.set_title(title)
+    return save_figure(figure, path, dpi=100)
