@@ -1,4 +1,4 @@
-"""The study subcommands of ``bearing-mbs``: skidding, cage-models, static-check and numerics-report.
+"""The study subcommands of ``bearing-mbs``: skidding, skidding-map, cage-models, static-check and numerics-report.
 
 Smoke tests: each runs on a tiny case (a few milliseconds of simulated time on Exudyn's generalized-alpha, one
 load, one engine) and must exit with status 0 and write its files; bad input must exit with status 2 before
@@ -34,6 +34,21 @@ def test_skidding_writes_the_sweep(tmp_path, capsys):
     assert [(row["cage_model"], float(row["radial_load"])) for row in rows] == [("constraint", 68000.0),
                                                                              ("constraint", 2000.0)]
     assert "constraint cage: slip" in capsys.readouterr().out
+
+
+def test_skidding_map_writes_the_grid_and_its_figures(tmp_path, capsys):
+    out = tmp_path / "map"
+    code = main(["skidding-map", str(SCENARIOS / "seed_hss_lubricated.toml"), "--out", str(out), "--loads",
+                 "6800,2000", "--temperatures", "60", "--speeds", "1500", "--minimum-load", "4000,9000", "--quiet"])
+    assert code == 0
+    assert {path.name for path in out.iterdir()} == {"skidding_map.csv", "skidding_map.md", "skidding_map.png",
+                                                     "roller_slip.png"}
+    with (out / "skidding_map.csv").open(newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert [float(row["radial_load"]) for row in rows] == [6800.0, 2000.0]
+    assert all(row["status"] == "success" for row in rows)
+    assert float(rows[1]["cage_slip"]) > float(rows[0]["cage_slip"]) > 0
+    assert "cage slip [%]" in capsys.readouterr().out
 
 
 def test_cage_models_writes_the_table_and_figures(tmp_path):

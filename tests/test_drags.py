@@ -94,3 +94,28 @@ def test_the_no_load_torque_is_the_power_of_the_drags_over_the_ring_speed():
     power = 15 * (0.1 * orbit**2 + 0.03 * orbit**3 + 1e-6 * spin**2)
     assert no_load_torque(15, 0.235, 0.0125, 0.105, 157.0, 70.0, 0.1, 0.03, 1e-6) == pytest.approx(power / 157,
                                                                                                     rel=1e-12)
+
+
+@pytest.mark.parametrize("temperature", [40.0, 60.0, 80.0])
+def test_the_lubricated_seed_bearings_no_load_torque_is_of_palmgrens_order(temperature):
+    """Palmgren's M_0 = 1e-7 f_0 (ν n)^(2/3) d_m³ N mm (Harris & Kotzalas 2006, ch. 9; f_0 = 2 for a caged
+    cylindrical roller bearing, ν in mm²/s, n in rpm, d_m in mm), an empirical total of every load-independent
+    loss, cross-checks the computed ones: the rollers' churning drag and the cage's land film, turning at the
+    epicyclic speeds. They must come to 0.4-1 × M_0: below it, because the EHL rolling resistance is not
+    computed (docs/skidding.md); the same order, or a loss is wrong by a factor. Measured 0.53-0.61."""
+    from bearing_mbs.contact.lubricant import PRESETS
+    from bearing_mbs.elements.journal_bearings import JournalFilm
+    from bearing_mbs.models import build_scene, load_spec
+    from cases import SCENARIOS
+
+    spec = load_spec(SCENARIOS / "seed_hss_lubricated.toml", [f"lubricant.temperature={temperature}"])
+    scene = build_scene(spec)
+    drag = next(f for f in scene.forces if isinstance(f, Drag))
+    film = next(f for f in scene.forces if isinstance(f, JournalFilm))
+    inner, cage = 1500 * math.pi / 30, 1500 * math.pi / 30 * (1 - 0.025 / 0.235) / 2
+    orbit, spin = cage * 0.1175, (inner - cage) * 0.105 / 0.0125
+    power = 15 * (drag.quadratic * orbit**3 + drag.angular * spin**2)
+    power += 2 * math.pi * film.viscosity * cage**2 * film.radius**3 * film.length / film.clearance  # Petroff
+    nu = PRESETS["iso_vg_320_mineral"].kinematic_viscosity(temperature) * 1e6
+    palmgren = 1e-7 * 2 * (nu * 1500) ** (2 / 3) * 235**3 * 1e-3
+    assert 0.4 < power / inner / palmgren < 1.0
