@@ -23,6 +23,7 @@ from bearing_mbs.engines import simulate
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
 from bearing_mbs.runner import summarize
+from bearing_mbs.spec import SpecError
 from cases import SCENARIOS
 
 LUBRICATED = ["lubricant.oil=iso_vg_320_mineral", "lubricant.temperature=60", "contact.inner_race.friction_law=ehl",
@@ -85,3 +86,15 @@ def test_exudyn_settles_on_the_quasi_static_slip(case):
         assert abs(dynamic - steady) < 0.001
     else:
         assert steady == pytest.approx(dynamic, rel=0.05)
+
+
+@pytest.mark.parametrize("scenario, overrides, field", [
+    ("seed_hss_startup.toml", [], "drive.profile"),  # a speed ramp has no steady state
+    ("seed_hss_load_drop.toml", [], "load.profile"),  # nor has a load step
+    ("seed_hss_steady.toml", ["cage.model=none"], "cage.model"),
+])
+def test_a_scene_without_a_steady_caged_state_is_refused(scenario, overrides, field):
+    scene = build_scene(load_spec(SCENARIOS / scenario, overrides))
+    with pytest.raises(SpecError) as refused:
+        solve_skidding(scene)
+    assert refused.value.field == field

@@ -57,6 +57,10 @@ from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
 from bearing_mbs.spec.fields import SpecError
 
 
+#: Cage speeds, as fractions of the epicyclic one, tried in turn for the lower end of the balance's bracket.
+BRACKET_FRACTIONS = (0.98, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03)
+
+
 @dataclass(frozen=True)
 class SkiddingSolution:
     """The steady state: cage_speed ω_c and the epicyclic (slip-free) cage speed [rad/s]; at Z × phases roller
@@ -115,11 +119,18 @@ def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
     def torque(cage_speed):
         return _state(bearing, cage_speed, phases)[0]
 
-    low, high = 1e-3 * epicyclic, 1.02 * epicyclic
-    if torque(low) * torque(high) > 0:
-        raise SpecError("scene", scene.name, "a cage torque balance between 0.1 % and 102 % of the epicyclic cage "
-                        "speed; none found (is the bearing driven at all?)")
-    cage_speed = brentq(torque, low, high, xtol=1e-12 * epicyclic, rtol=1e-12)
+    # bracket from the epicyclic speed down: an orbit at a crawling cage speed takes long to integrate
+    high = 1.02 * epicyclic
+    above = torque(high)
+    for fraction in BRACKET_FRACTIONS:
+        low = fraction * epicyclic
+        if torque(low) * above <= 0:
+            break
+        high = low
+    else:
+        raise ArithmeticError(f"{scene.name}: no cage torque balance between {BRACKET_FRACTIONS[-1]:.0%} and 102 % "
+                              "of the epicyclic cage speed (is the bearing driven at all?)")
+    cage_speed = brentq(torque, low, high, xtol=1e-10 * epicyclic, rtol=1e-12)
     return SkiddingSolution(cage_speed, epicyclic, **_state(bearing, cage_speed, phases)[1])
 
 
@@ -127,10 +138,14 @@ def _read(scene: Scene) -> _Bearing:
     layout = BearingLayout.of(scene)
     pairs = scene.topology.pairs if scene.topology is not None else {}
     if layout is None or "cage" not in scene.topology.bodies:
-        raise SpecError("scene", scene.name, "a caged roller bearing (inner ring, rollers, cage)")
+        raise SpecError("cage.model", "none" if layout is not None else scene.name,
+                        "a caged roller bearing (inner ring, rollers, cage) for the skidding balance")
+    if layout.lowest_speed != layout.shaft_speed:
+        raise SpecError("drive.profile", f"{layout.lowest_speed:g} to {layout.shaft_speed:g} rad/s",
+                        "a constant shaft speed for a steady state")
     times, applied = layout.applied_load()
     if np.ptp(applied, axis=0).max() > 0:
-        raise SpecError("load", "varies in time", "a constant load for a steady state")
+        raise SpecError("load.profile", "varies in time", "a constant load for a steady state")
     drags = [d for d in scene.items_of(Drag) if d.body == layout.rollers[0]]
     cage_index = int(scene.topology.bodies["cage"][0])
     cage = scene.bodies[cage_index]
