@@ -45,8 +45,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from bearing_mbs.contact.friction import erf_sign
-from bearing_mbs.contact.traction import ehl_traction
+from bearing_mbs.contact import kernel
+from bearing_mbs.contact.friction import FRICTION_LAWS, rolling_resistance_moment
+from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
 from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalFilm
@@ -94,6 +95,22 @@ class SkiddingSolution:
         return 1.0 - self.cage_speed / self.epicyclic_cage_speed
 
 
+class _Law(NamedTuple):
+    """A pair law as the compiled kernel takes it."""
+
+    code: int  # index in FRICTION_LAWS
+    coefficient: float  # μ (boundary μ_b for ehl) [-]
+    regularisation_speed: float  # [m/s]
+    arm: float  # rolling-resistance arm [m]
+    row: np.ndarray  # the traction row (zeros unless ehl)
+
+    @classmethod
+    def of(cls, law) -> _Law:
+        row = np.asarray(law.traction, float) if law.traction else np.zeros(N_TRACTION_COLUMNS)
+        return cls(FRICTION_LAWS.index(law.friction_law), law.friction_coefficient, law.regularisation_speed,
+                   law.rolling_resistance_arm, row)
+
+
 @dataclass(frozen=True)
 class _Bearing:
     """What the balance reads from the scene."""
@@ -104,7 +121,9 @@ class _Bearing:
     drag: tuple[float, float, float]  # linear [N s/m], quadratic [N s²/m²], angular [N m s/rad]
     cage_mass: float
     cage_radius: float
-    land_law: object | None
+    inner_law: _Law
+    outer_law: _Law
+    land_law: _Law | None
     gravity: np.ndarray
     pocket_contacts: bool
     land_film: JournalFilm | None
@@ -152,25 +171,24 @@ def _read(scene: Scene) -> _Bearing:
     land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
     return _Bearing(layout, layout.shaft_speed, applied[-1],
                     (sum(d.linear for d in drags), sum(d.quadratic for d in drags), sum(d.angular for d in drags)),
-                    cage.mass, land.radius_b if land is not None else 0.0, land.law if land is not None else None,
+                    cage.mass, land.radius_b if land is not None else 0.0, _Law.of(layout.inner_law),
+                    _Law.of(layout.outer_law), _Law.of(land.law) if land is not None else None,
                     np.asarray(scene.gravity, float), not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
                     next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None))
 
 
-def _traction(law, sliding, rolling, load):
-    """The tangential force [N] on the roller at one contact (the kernel's convention: −μ Q)."""
+def _traction(law: _Law, sliding, rolling, load):
+    """The tangential force [N] on the roller at one contact: the compiled kernel's, −μ Q along the slip."""
     if load <= 0.0:
         return 0.0
-    if law.friction_law == "ehl":
-        mu = ehl_traction(np.asarray(law.traction), sliding, rolling, load, law.friction_coefficient,
-                          law.regularisation_speed)[0]
-    else:
-        mu = law.friction_coefficient * erf_sign(sliding, law.regularisation_speed)
-    return -mu * load
+    return kernel.tangential_force(law.code, load, law.coefficient, sliding, rolling, law.regularisation_speed,
+                                   law.row)
 
 
-def _rolling_resistance(law, load, relative_spin, radius):
-    return -law.rolling_resistance_arm * load * erf_sign(relative_spin * radius, law.regularisation_speed)
+def _rolling_resistance(law: _Law, load, relative_spin, radius):
+    """The rolling-resistance moment [N m] on the roller (the kernel's regularised sign of the rim speed)."""
+    return rolling_resistance_moment(load, law.arm, kernel.regularised_sign(law.code, relative_spin * radius,
+                                                                            law.regularisation_speed))
 
 
 class _RollerForces(NamedTuple):
@@ -196,10 +214,10 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
     u_i = 0.5 * ((omega_i - cage_speed) * r_i + (cage_speed - spin) * r)
     u_o = 0.5 * (cage_speed * r_o + (cage_speed - spin) * r)
-    f_i = _traction(layout.inner_law, du_i, u_i, q_i)
-    f_o = _traction(layout.outer_law, du_o, u_o, q_o)
-    m_i = _rolling_resistance(layout.inner_law, q_i, spin - omega_i, r)
-    m_o = _rolling_resistance(layout.outer_law, q_o, spin, r)
+    f_i = _traction(bearing.inner_law, du_i, u_i, q_i)
+    f_o = _traction(bearing.outer_law, du_o, u_o, q_o)
+    m_i = _rolling_resistance(bearing.inner_law, q_i, spin - omega_i, r)
+    m_o = _rolling_resistance(bearing.outer_law, q_o, spin, r)
     drag = (linear + quadratic * abs(orbit)) * orbit
     loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + angular * spin**2
     return _RollerForces(-r * f_i + r * f_o + m_i + m_o - angular * spin, f_i, f_o, du_i, du_o, u_i, u_o,
@@ -298,8 +316,9 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
     if bearing.land_film is not None:
         land = float(np.mean([_film_torque(bearing.land_film, cage_speed, load) for load in normal]))
     elif bearing.land_law is not None:
-        land = -bearing.land_law.friction_coefficient * float(np.mean(normal)) * bearing.cage_radius * erf_sign(
-            cage_speed * bearing.cage_radius, bearing.land_law.regularisation_speed)
+        law = bearing.land_law
+        land = -law.coefficient * float(np.mean(normal)) * bearing.cage_radius * kernel.regularised_sign(
+            law.code, cage_speed * bearing.cage_radius, law.regularisation_speed)
     torque = -radius * rollers * means["pocket_force"] + land
     state = {"roller_angles": psi, "inner_loads": q_i, "outer_loads": q_o, "roller_speeds": spins,
              "pocket_forces": pocket, "inner_traction": rows.inner_traction, "outer_traction": rows.outer_traction,
