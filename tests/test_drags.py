@@ -9,7 +9,7 @@ References, independent of the code under test:
 * the energy audit: the drag's work equals the kinetic energy lost, to 1e-6 of it (Exudyn integrates the work
   alongside its own step);
 * the drag coefficient of a circular cylinder in cross flow: the measured curve (C. Wieselsberger, 1921, as
-  plotted by F. M. White, Viscous Fluid Flow, 2nd ed., 1991, next to his fit eq. 3-225), read by eye:
+  plotted by F. M. White, Viscous Fluid Flow, 2nd ed., 1991, next to his fit), read by eye:
   C_D ≈ 10 at Re = 1, 1.5 at 10², 1.0 at 10³, 1.15 at 10⁴. The fit must follow it to 15 %.
 """
 

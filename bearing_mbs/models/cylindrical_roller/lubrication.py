@@ -25,13 +25,13 @@ rolling set falls with the load, the drag does not.
 **Churning** (model ``churning``): each roller moves through an oil–air mixture of oil volume fraction X, of
 density :math:`\rho_e = X\rho_{oil} + (1-X)\rho_{air}` and viscosity :math:`\eta_e = X\eta_{oil}` (air's
 neglected; so :math:`\nu_e \approx \nu_{oil}`, our choice). Its orbital motion meets form drag, in the form
-used for rollers by T. A. Harris and M. N. Kotzalas (Advanced Concepts of Bearing Technology, 5th ed., 2007,
-ch. 3), :math:`F = \tfrac12\rho_e C_D D_w L_w v^2` against the roller centre's velocity v, with the drag
-coefficient of a circular cylinder in cross flow fitted by F. M. White (Viscous Fluid Flow, 2nd ed., 1991,
-eq. 3-225), :math:`C_D = 1 + 10\,Re^{-2/3}` for :math:`1 \le Re = vD_w/\nu_e \le 2\cdot10^5`, taken at the
-epicyclic orbital speed. Its spin meets the laminar shear of a cylinder turning in an unbounded fluid, whose
-wall stress is :math:`2\eta_e\omega` (e.g. G. K. Batchelor, An Introduction to Fluid Dynamics, 1967, §4.2):
-torque :math:`4\pi\eta_e R_w^2 L_w\,\omega`. The orbital drag grows with the square of the speed, Palmgren's
+used for rollers by T. A. Harris and M. N. Kotzalas (Advanced Concepts of Bearing Technology, 5th ed., 2007),
+:math:`F = \tfrac12\rho_e C_D D_w L_w v^2` against the roller centre's velocity v, with the drag coefficient of a
+circular cylinder in cross flow as fitted by F. M. White (Viscous Fluid Flow, 2nd ed., 1991),
+:math:`C_D = 1 + 10\,Re^{-2/3}` for :math:`1 \le Re = vD_w/\nu_e \le 2\cdot10^5`, taken at the epicyclic
+orbital speed. Its spin meets the laminar shear of a cylinder turning in an unbounded fluid (the flow
+:math:`u_\theta = \omega R_w^2/r` outside it, whose wall stress is :math:`2\eta_e\omega`): torque
+:math:`4\pi\eta_e R_w^2 L_w\,\omega`. The orbital drag grows with the square of the speed, Palmgren's
 :math:`M_0` only as :math:`n^{2/3}`: this is what makes a faster bearing skid more. :math:`M_0` is then only a
 cross-check of the total no-load torque (:func:`no_load_torque`).
 """
@@ -69,7 +69,7 @@ def mixture_density(oil_fraction: float, oil_density: float) -> float:
 
 
 def cylinder_drag_coefficient(reynolds: float) -> float:
-    """C_D of a circular cylinder in cross flow (White 1991, eq. 3-225; fitted for 1 <= Re <= 2e5, held at the
+    """C_D of a circular cylinder in cross flow (White 1991; fitted for 1 <= Re <= 2e5, held at the
     ends outside)."""
     return 1 + 10 * min(max(reynolds, 1.0), 2e5) ** (-2 / 3)
 
