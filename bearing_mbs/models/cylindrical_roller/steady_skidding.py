@@ -267,7 +267,9 @@ def _spin_around_the_orbit(bearing: _Bearing, cage_speed: float, psi, q_i, q_o):
         forces = _roller(bearing, cage_speed, y[0], load_at(t, loads_i), load_at(t, loads_o))
         return [forces.moment / layout.roller_inertia, *(getattr(forces, name) for name in _MEANS)]
 
-    def orbit(spin0, times=None):
+    times = np.append(psi_from / cage_speed, period)
+
+    def orbit(spin0):
         solution = solve_ivp(rate, (0.0, period), [spin0, 0.0, 0.0, 0.0], method="LSODA", rtol=1e-10,
                              atol=np.array([1e-9, 1e-12, 1e-12, 1e-9]), t_eval=times)
         if not solution.success:
@@ -278,13 +280,19 @@ def _spin_around_the_orbit(bearing: _Bearing, cage_speed: float, psi, q_i, q_o):
     middle, half = _rolling_bracket(bearing, cage_speed)
     spin0 = _bracketed_root(lambda w: _roller(bearing, cage_speed, w, loads_i[0], loads_o[0]).moment, middle, half)
     # the periodic orbit: a secant on ω(T) − ω(0), from the balance at the start and one orbit on
-    start_spins = [spin0, orbit(spin0).y[0, -1]]
-    gaps = [start_spins[1] - start_spins[0], orbit(start_spins[1]).y[0, -1] - start_spins[1]]
-    while abs(gaps[-1]) > 1e-10 * abs(start_spins[-1]) and len(gaps) < 30:
-        step = gaps[-1] * (start_spins[-1] - start_spins[-2]) / (gaps[-1] - gaps[-2]) if gaps[-1] != gaps[-2] else 0
-        start_spins.append(start_spins[-1] - step)
-        gaps.append(orbit(start_spins[-1]).y[0, -1] - start_spins[-1])
-    periodic = orbit(start_spins[-1], np.append(psi_from / cage_speed, period))
+    runs = [orbit(spin0)]
+    starts = [spin0, runs[0].y[0, -1]]
+    runs.append(orbit(starts[1]))
+    gaps = [starts[1] - starts[0], runs[1].y[0, -1] - starts[1]]
+    while abs(gaps[-1]) > 1e-10 * abs(starts[-1]) and len(gaps) < 30:
+        step = gaps[-1] * (starts[-1] - starts[-2]) / (gaps[-1] - gaps[-2]) if gaps[-1] != gaps[-2] else 0.0
+        starts.append(starts[-1] - step)
+        runs.append(orbit(starts[-1]))
+        gaps.append(runs[-1].y[0, -1] - starts[-1])
+    if abs(gaps[-1]) > 1e-6 * abs(starts[-1]):
+        raise ArithmeticError(f"the roller-spin orbit at cage speed {cage_speed:g} rad/s did not close: it ends "
+                              f"{gaps[-1]:.3g} rad/s from its start after {len(gaps)} orbits")
+    periodic = runs[-1]
     return np.roll(periodic.y[0, :-1], start), dict(zip(_MEANS, periodic.y[1:, -1] / period))
 
 
