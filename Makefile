@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-slow bench static-check skidding cage-models clean
+.PHONY: demo test test-slow bench static-check skidding skidding-map cage-models clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -31,6 +31,10 @@ static-check: $(STAMP)
 skidding: $(STAMP)
 	$(BIN)/bearing-mbs skidding scenarios/seed_hss_steady.toml --out out/skidding --overwrite \
 		--set scenario.end_time=0.3 --set analysis.start=0.1
+
+skidding-map: $(STAMP)
+	$(BIN)/bearing-mbs skidding-map scenarios/seed_hss_lubricated.toml --out out/skidding_map --overwrite \
+		--minimum-load 4000,9000
 
 cage-models: $(STAMP)
 	$(BIN)/bearing-mbs cage-models scenarios/cage_models.toml --out out/cage_models --overwrite
