@@ -41,11 +41,12 @@ def revolution(overrides: list[str]) -> dict:
     result = simulate(scene, spec.solver, REVOLUTION)
     stats = result.stats
     return {"status": result.status, "wall_time_s_per_revolution": stats.wall_time_s, "steps": stats.steps,
-            "force_evaluations": stats.force_evaluations, "microseconds_per_step": stats.wall_time_s / stats.steps * 1e6}
+            "force_evaluations": stats.force_evaluations,
+            "microseconds_per_step": stats.wall_time_s / stats.steps * 1e6}
 
 
 def rk4_limit(name: str) -> float:
-    spec, scene = scene_of(name, ["cage.model=constraint"])
+    _, scene = scene_of(name, ["cage.model=constraint"])
     return advise(scene).limit_and_mode("reference", "rk4")[0]
 
 

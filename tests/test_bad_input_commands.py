@@ -37,8 +37,8 @@ ROWS = {
                                         "convergence.end"),
     "stiffness of a balls scenario": (["stiffness", BALLS, "--out", "{out}"], "scenario.model"),
     # Exudyn's explicit ladders of the study cannot run a constraint cage: refused before the reference runs
-    "explicit Exudyn on a constraint cage": (["convergence", STEADY, "--out", "{out}", "--set", "cage.model=constraint"],
-                                             "solver.exudyn.method"),
+    "explicit Exudyn on a constraint cage": (["convergence", STEADY, "--out", "{out}", "--set",
+                                              "cage.model=constraint"], "solver.exudyn.method"),
     "skidding map of a dry scenario": (["skidding-map", STEADY, "--out", "{out}"], "lubricant.temperature"),
     "skidding map beyond the oil's fit": (["skidding-map", LUBRICATED, "--out", "{out}", "--temperatures", "40,150"],
                                           "lubricant.temperature"),

@@ -9,7 +9,8 @@
 ``bearing-mbs numerics-report STUDY_DIR --name NAME --out DIR [--norms ...] [--document-step H]`` (docs/numerics.md)
 ``bearing-mbs static-check SCENARIO.toml --out DIR [--engines ...] [--loads ...]`` (docs/quasistatic.md)
 ``bearing-mbs skidding SCENARIO.toml --out DIR [--loads ...] [--cages ...]`` (docs/skidding.md)
-``bearing-mbs skidding-map SCENARIO.toml --out DIR [--loads ...] [--temperatures ...] [--speeds ...]`` (docs/skidding.md)
+``bearing-mbs skidding-map SCENARIO.toml --out DIR [--loads ...] [--temperatures ...] [--speeds ...]``
+(docs/skidding.md)
 ``bearing-mbs cage-models SCENARIO.toml --out DIR [--no-roller-guided]`` (docs/cage-models.md)
 ``bearing-mbs slewing SCENARIO.toml --out DIR`` (docs/slewing.md)
 ``bearing-mbs journal SCENARIO.toml --out DIR`` (docs/fluid-film.md)

@@ -179,7 +179,8 @@ def trend(rows: list[dict]) -> dict:
 
 def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str = "") -> Path:
     """Cage slip [%] against total radial load [N], one curve per cage model (log axes), with the halves of
-    each window as a bar and the quasi-static balance dashed and, around the penalty curve, the pocket-play resolution of the window as a band;
+    each window as a bar and the quasi-static balance dashed and, around the penalty curve, the pocket-play
+    resolution of the window as a band;
     the largest inner-raceway slip ratio below."""
     figure, (cage, rollers) = new_figure(2, 1, figsize=(6.5, 6.0), sharex=True)
     styles = {"penalty": ("C0", "o"), "constraint": ("C1", "s")}
@@ -221,15 +222,16 @@ def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str
 def markdown_table(sweeps: dict[str, list[dict]]) -> str:
     """All rows as a Markdown table (slips in %)."""
     lines = ["| cage | radial load [N] | total load [N] | cage slip [%] | window halves [%] | quasi-static [%] | "
-             "resolution [%] | settled | largest inner-raceway slip ratio | max roller load [N] | max pocket force [N] | "
-             "max cage eccentricity [µm] | wall [s] |",
+             "resolution [%] | settled | largest inner-raceway slip ratio | max roller load [N] | "
+             "max pocket force [N] | max cage eccentricity [µm] | wall [s] |",
              "|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"]
     for name, rows in sweeps.items():
         for row in rows:
             lines.append(
                 f"| {name} | {row['radial_load']:g} | {row['total_load']:.0f} | {100 * row['cage_slip']:.3g} | "
                 f"{100 * row['cage_slip_first_half']:.3g}, {100 * row['cage_slip_second_half']:.3g} | "
-                f"{100 * row['quasi_static_slip']:.3g} | {100 * row['resolution']:.3g} | {'yes' if row['settled'] else 'no'} | "
+                f"{100 * row['quasi_static_slip']:.3g} | {100 * row['resolution']:.3g} | "
+                f"{'yes' if row['settled'] else 'no'} | "
                 f"{row['max_roller_slip_inner'] or float('nan'):.3g} | {row['max_roller_load']:.0f} | "
                 f"{row['max_pocket_force'] or float('nan'):.0f} | "
                 f"{1e6 * (row['max_cage_eccentricity'] or float('nan')):.0f} | {row['wall_time_s']:.1f} |")

@@ -124,7 +124,8 @@ def markdown_table(rows: list[dict]) -> str:
     loads = sorted({row["radial_load"] for row in rows}, reverse=True)
     value = {(row["speed_rpm"], row["temperature"], row["radial_load"]): row for row in rows}
     lines = []
-    for title, field, scale in (("cage slip [%]", "cage_slip", 100.0), ("friction torque [N m]", "friction_torque", 1.0)):
+    tables = (("cage slip [%]", "cage_slip", 100.0), ("friction torque [N m]", "friction_torque", 1.0))
+    for title, field, scale in tables:
         lines += [f"{title}:", "", "| radial load [N] | " + " | ".join(f"{s:g} rpm, {t:g} °C" for s, t in keys) + " |",
                   "|---:|" + "---:|" * len(keys)]
         for load in loads:

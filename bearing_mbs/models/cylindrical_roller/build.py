@@ -24,13 +24,13 @@ import math
 
 import numpy as np
 
+from bearing_mbs.contact.ehl import FILM_FORMULAS, reduced_radius
 from bearing_mbs.contact.line_contact import (
     PALMGREN_EXPONENT,
     STEEL_EFFECTIVE_MODULUS,
     effective_modulus,
     palmgren_stiffness,
 )
-from bearing_mbs.contact.ehl import FILM_FORMULAS, reduced_radius
 from bearing_mbs.contact.traction import TRACTION_COLUMNS, TRACTION_MODELS
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, Profile, Scene
 from bearing_mbs.core.topology import Topology
@@ -45,9 +45,13 @@ from bearing_mbs.models.cylindrical_roller.drivetrain import (
     speed_profile,
 )
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
-from bearing_mbs.models.cylindrical_roller.lubrication import (mixture_density, orbital_drag_coefficient,
-                                                               palmgren_drag_moment, roller_drag_coefficient,
-                                                               spin_drag_coefficient)
+from bearing_mbs.models.cylindrical_roller.lubrication import (
+    mixture_density,
+    orbital_drag_coefficient,
+    palmgren_drag_moment,
+    roller_drag_coefficient,
+    spin_drag_coefficient,
+)
 from bearing_mbs.spec import Spec, SpecError
 
 #: The primary document's raceway laws K δ^1.3 (annex II: KI, KE, NI = NE).
@@ -144,8 +148,8 @@ def build_bearing_scene(spec: Spec) -> Scene:
     if groups["pocket"]:
         groups["pocket"] = np.reshape(groups["pocket"], (geometry.rollers, -1))
     topology = Topology(bodies=roles, pairs={group: indices for group, indices in groups.items() if len(indices)})
-    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints), (*loads, *drives, *drags, *films),
-                  gravity=(0.0, -spec.scenario.gravity), topology=topology)
+    scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints),
+                  (*loads, *drives, *drags, *films), gravity=(0.0, -spec.scenario.gravity), topology=topology)
     _reject_initial_overlap(scene, geometry)
     return scene
 

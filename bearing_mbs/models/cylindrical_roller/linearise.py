@@ -53,8 +53,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from bearing_mbs.contact.friction import ZERO_SLIP_SLOPE
-from bearing_mbs.contact.traction import zero_slip_slope
 from bearing_mbs.contact.line_contact import power_law_stiffness
+from bearing_mbs.contact.traction import zero_slip_slope
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed, roller_centrifugal_force

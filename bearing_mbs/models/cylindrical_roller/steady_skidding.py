@@ -24,7 +24,8 @@ Each roller's spin follows :math:`I\dot\omega_j = -r F_i + r F_o + M_{R,i} + M_{
 its orbit (:math:`\psi = \omega_c t`, periodic): held at its balance in the load zone, coasting outside it. Its
 tangential balance gives the pocket force on it, :math:`P_j = (c + c_2 v) v - F_i - F_o`. The cage's torque
 balance, averaged over the orbit (the cage's inertia filters the pitch's ripple), fixes :math:`\omega_c`:
-:math:`\langle -R\sum_j P_j\rangle + T_l = 0`: the land's torque :math:`T_l = -\mu_l N r_c\,\varphi(\omega_c r_c)` dry, or
+:math:`\langle -R\sum_j P_j\rangle + T_l = 0`: the land's torque
+:math:`T_l = -\mu_l N r_c\,\varphi(\omega_c r_c)` dry, or
 the Couette torque of its oil film (a short journal bearing, :mod:`bearing_mbs.fluid_film`) at the eccentricity
 where the film carries N. N is the land's normal force,
 the magnitude of the cage's weight plus, with pocket contacts, :math:`-\sum_j P_j e_{\theta,j}` (the constraint
@@ -56,7 +57,6 @@ from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
 from bearing_mbs.models.cylindrical_roller.linearise import BearingLayout
 from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
 from bearing_mbs.spec.fields import SpecError
-
 
 #: Cage speeds, as fractions of the epicyclic one, tried in turn for the lower end of the balance's bracket.
 BRACKET_FRACTIONS = (0.98, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03)
@@ -162,7 +162,7 @@ def _read(scene: Scene) -> _Bearing:
     if layout.lowest_speed != layout.shaft_speed:
         raise SpecError("drive.profile", f"{layout.lowest_speed:g} to {layout.shaft_speed:g} rad/s",
                         "a constant shaft speed for a steady state")
-    times, applied = layout.applied_load()
+    _, applied = layout.applied_load()
     if np.ptp(applied, axis=0).max() > 0:
         raise SpecError("load.profile", "varies in time", "a constant load for a steady state")
     drags = [d for d in scene.items_of(Drag) if d.body == layout.rollers[0]]
@@ -173,7 +173,8 @@ def _read(scene: Scene) -> _Bearing:
                     (sum(d.linear for d in drags), sum(d.quadratic for d in drags), sum(d.angular for d in drags)),
                     cage.mass, land.radius_b if land is not None else 0.0, _Law.of(layout.inner_law),
                     _Law.of(layout.outer_law), _Law.of(land.law) if land is not None else None,
-                    np.asarray(scene.gravity, float), not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
+                    np.asarray(scene.gravity, float),
+                    not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
                     next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None))
 
 
