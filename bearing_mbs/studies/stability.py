@@ -49,7 +49,7 @@ import numpy as np
 from bearing_mbs.analysis import energy_balance_error
 from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.progress import ProgressMeter
-from bearing_mbs.engines import simulate
+from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models import build_scene, spec_from_mapping
 from bearing_mbs.numerics.advisor import advise
@@ -368,12 +368,18 @@ def study(base: Spec, directory: str | Path, cases=CASE_NAMES, solvers=SOLVERS,
     unknown = [name for name in cases if name not in CASE_NAMES]
     if unknown:
         raise SpecError("cases", unknown, f"must be among: {', '.join(CASE_NAMES)}")
+    by_name = {case.name: case for case in CASES}
+    for name in cases:  # a solver the engine cannot run on a case is refused before the first probe
+        spec = case_spec(base, by_name[name])
+        scene = build_scene(spec)
+        for engine, method in solvers:
+            check_supported(scene, solver_at(spec.solver, engine, method, 1e-6,  # a step [s] or a tolerance
+                                             largest_step=settings.output_interval))
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     table = directory / "stability.csv"
     rows = read_rows(table)
     done = {(r["case"], r["engine"], r["solver"]) for r in rows}
-    by_name = {case.name: case for case in CASES}
     total, cell = len(cases) * len(solvers), 0
     for name in cases:
         if all((name, engine, method) in done for engine, method in solvers):
