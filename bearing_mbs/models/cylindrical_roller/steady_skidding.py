@@ -59,7 +59,7 @@ from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
 from bearing_mbs.spec.fields import SpecError
 
 #: Cage speeds, as fractions of the epicyclic one, tried in turn for the lower end of the balance's bracket.
-BRACKET_FRACTIONS = (0.98, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03)
+BRACKET_FRACTIONS = (0.98, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03, 0.01)
 
 
 @dataclass(frozen=True)
@@ -148,7 +148,9 @@ def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
         high = low
     else:
         raise ArithmeticError(f"{scene.name}: no cage torque balance between {BRACKET_FRACTIONS[-1]:.0%} and 102 % "
-                              "of the epicyclic cage speed (is the bearing driven at all?)")
+                              "of the epicyclic cage speed: the cage slips by more than "
+                              f"{1 - BRACKET_FRACTIONS[-1]:.0%} (the drags exceed what the traction carries) or is not "
+                              "driven at all")
     cage_speed = brentq(torque, low, high, xtol=1e-10 * epicyclic, rtol=1e-12)
     return SkiddingSolution(cage_speed, epicyclic, **_state(bearing, cage_speed, phases)[1])
 
