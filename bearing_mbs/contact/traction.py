@@ -46,7 +46,7 @@ import math
 import numpy as np
 from numba.extending import register_jitable
 
-from bearing_mbs.contact import ehl
+from bearing_mbs.contact import ehl, friction
 
 #: Film-shear traction models in the order of their integer codes.
 TRACTION_MODELS = ("eyring", "curve")
@@ -110,7 +110,8 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
     length, radius, modulus = row[_LENGTH], row[_RADIUS], row[_MODULUS]
     viscosity, pressure_viscosity, roughness = row[_VISCOSITY], row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
     load = normal_force / length
-    central, minimum = ehl.film_thickness(int(row[_FORMULA]), speed, load, viscosity, pressure_viscosity, modulus, radius)
+    central, minimum = ehl.film_thickness(int(row[_FORMULA]), speed, load, viscosity, pressure_viscosity, modulus,
+                                          radius)
     if row[_THERMAL] > 0.0:
         reduction = ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY],
                                                               row[_CONDUCTIVITY]))
@@ -126,7 +127,7 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
                                 row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
     else:
         fluid = curve_traction(slip / speed, row[_CURVE_A], row[_CURVE_B], row[_CURVE_C], row[_CURVE_D])
-    boundary = boundary_coefficient * math.erf(2.0 * slip / regularisation_speed)
+    boundary = boundary_coefficient * friction.erf_sign(slip, regularisation_speed)
     return share * boundary + (1.0 - share) * fluid, minimum, film_parameter
 
 

@@ -19,7 +19,7 @@ class Drag:
 
     name: str
     body: int
-    linear: float
+    linear: float = 0.0
     angular: float = 0.0
     quadratic: float = 0.0
 

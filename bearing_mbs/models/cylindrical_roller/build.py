@@ -139,8 +139,8 @@ def build_bearing_scene(spec: Spec) -> Scene:
         drives.append(VelocityServo("speed_servo", INNER_RING, gain, speed_profile(drive)))
 
     coefficients = roller_drag(spec, geometry)
-    drags = tuple(Drag(f"roller{k}-drag", first_roller + k, **{"linear": 0.0, **coefficients})
-                  for k in range(geometry.rollers) if coefficients)
+    drags = tuple(Drag(f"roller{k}-drag", first_roller + k, **coefficients) for k in range(geometry.rollers)
+                  if coefficients)
     films = (land_film(spec, geometry),) if spec.lubricant.land_film else ()
     roles = {"inner_ring": [INNER_RING], "rollers": list(range(first_roller, first_roller + geometry.rollers))}
     if caged:
@@ -235,7 +235,8 @@ def traction_row(contact, lubricant, reduced_modulus: float, radius: float, leng
     length l [m]."""
     oil, temperature = lubricant.lubricant(), lubricant.temperature
     values = {
-        "model": TRACTION_MODELS.index(contact.traction_model), "film_formula": FILM_FORMULAS.index(contact.film_formula),
+        "model": TRACTION_MODELS.index(contact.traction_model),
+        "film_formula": FILM_FORMULAS.index(contact.film_formula),
         "thermal": float(contact.thermal_reduction), "viscosity": oil.dynamic_viscosity(temperature),
         "pressure_viscosity": oil.pressure_viscosity, "temperature_viscosity": oil.temperature_viscosity(temperature),
         "conductivity": oil.thermal_conductivity, "modulus": reduced_modulus, "radius": radius, "length": length,

@@ -47,10 +47,10 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from bearing_mbs.contact import kernel
-from bearing_mbs.contact.friction import FRICTION_LAWS, rolling_resistance_moment
-from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
+from bearing_mbs.contact.friction import rolling_resistance_moment
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
+from bearing_mbs.elements.contact_pairs import PairArrays, pack
 from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalFilm
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
@@ -95,20 +95,8 @@ class SkiddingSolution:
         return 1.0 - self.cage_speed / self.epicyclic_cage_speed
 
 
-class _Law(NamedTuple):
-    """A pair law as the compiled kernel takes it."""
-
-    code: int  # index in FRICTION_LAWS
-    coefficient: float  # μ (boundary μ_b for ehl) [-]
-    regularisation_speed: float  # [m/s]
-    arm: float  # rolling-resistance arm [m]
-    row: np.ndarray  # the traction row (zeros unless ehl)
-
-    @classmethod
-    def of(cls, law) -> _Law:
-        row = np.asarray(law.traction, float) if law.traction else np.zeros(N_TRACTION_COLUMNS)
-        return cls(FRICTION_LAWS.index(law.friction_law), law.friction_coefficient, law.regularisation_speed,
-                   law.rolling_resistance_arm, row)
+#: Rows of the packed raceway and land laws (:func:`bearing_mbs.elements.contact_pairs.pack`).
+_INNER, _OUTER, _LAND = 0, 1, 2
 
 
 @dataclass(frozen=True)
@@ -116,14 +104,11 @@ class _Bearing:
     """What the balance reads from the scene."""
 
     layout: BearingLayout
-    shaft_speed: float
     load: np.ndarray
     drag: tuple[float, float, float]  # linear [N s/m], quadratic [N s²/m²], angular [N m s/rad]
     cage_mass: float
     cage_radius: float
-    inner_law: _Law
-    outer_law: _Law
-    land_law: _Law | None
+    laws: PairArrays  # the inner and outer raceway pairs' laws, then the land's if the cage has one
     gravity: np.ndarray
     pocket_contacts: bool
     land_film: JournalFilm | None
@@ -133,7 +118,7 @@ def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
     """The steady cage and roller speeds of a constant-speed, constant-load bearing scene with a cage."""
     bearing = _read(scene)
     layout = bearing.layout
-    epicyclic = epicyclic_cage_speed(bearing.shaft_speed, 2 * layout.roller_radius, layout.pitch_diameter)
+    epicyclic = epicyclic_cage_speed(layout.shaft_speed, 2 * layout.roller_radius, layout.pitch_diameter)
 
     def torque(cage_speed):
         return _state(bearing, cage_speed, phases)[0]
@@ -171,27 +156,29 @@ def _read(scene: Scene) -> _Bearing:
     cage_index = int(scene.topology.bodies["cage"][0])
     cage = scene.bodies[cage_index]
     land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
-    return _Bearing(layout, layout.shaft_speed, applied[-1],
+    raceways = [scene.pairs[int(pairs[group][0])] for group in ("inner_race", "outer_race")]
+    return _Bearing(layout, applied[-1],
                     (sum(d.linear for d in drags), sum(d.quadratic for d in drags), sum(d.angular for d in drags)),
-                    cage.mass, land.radius_b if land is not None else 0.0, _Law.of(layout.inner_law),
-                    _Law.of(layout.outer_law), _Law.of(land.law) if land is not None else None,
+                    cage.mass, land.radius_b if land is not None else 0.0,
+                    pack(raceways + ([land] if land is not None else [])),
                     np.asarray(scene.gravity, float),
                     not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
                     next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None))
 
 
-def _traction(law: _Law, sliding, rolling, load):
-    """The tangential force [N] on the roller at one contact: the compiled kernel's, −μ Q along the slip."""
+def _traction(laws: PairArrays, k: int, sliding, rolling, load):
+    """The tangential force [N] on the roller at contact k: the compiled kernel's, −μ Q along the slip."""
     if load <= 0.0:
         return 0.0
-    return kernel.tangential_force(law.code, load, law.coefficient, sliding, rolling, law.regularisation_speed,
-                                   law.row)
+    return kernel.tangential_force(laws.friction_law[k], load, laws.friction_coefficient[k], sliding, rolling,
+                                   laws.regularisation_speed[k], laws.traction[k])
 
 
-def _rolling_resistance(law: _Law, load, relative_spin, radius):
-    """The rolling-resistance moment [N m] on the roller (the kernel's regularised sign of the rim speed)."""
-    return rolling_resistance_moment(load, law.arm, kernel.regularised_sign(law.code, relative_spin * radius,
-                                                                            law.regularisation_speed))
+def _rolling_resistance(laws: PairArrays, k: int, load, relative_spin, radius):
+    """The rolling-resistance moment [N m] on the roller at contact k (the kernel's regularised sign of the rim
+    speed)."""
+    spin_sign = kernel.regularised_sign(laws.friction_law[k], relative_spin * radius, laws.regularisation_speed[k])
+    return rolling_resistance_moment(load, laws.rolling_resistance_arm[k], spin_sign)
 
 
 class _RollerForces(NamedTuple):
@@ -211,16 +198,16 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     """The forces on a roller spinning at ``spin`` [rad/s] under the contact loads [N] while the cage turns at
     ``cage_speed`` [rad/s]."""
     layout = bearing.layout
-    r, orbit, omega_i = layout.roller_radius, cage_speed * layout.pitch_diameter / 2, bearing.shaft_speed
+    r, orbit, omega_i = layout.roller_radius, cage_speed * layout.pitch_diameter / 2, layout.shaft_speed
     r_i, r_o = layout.inner_radius, layout.outer_radius
     linear, quadratic, angular = bearing.drag
     du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
     u_i = 0.5 * ((omega_i - cage_speed) * r_i + (cage_speed - spin) * r)
     u_o = 0.5 * (cage_speed * r_o + (cage_speed - spin) * r)
-    f_i = _traction(bearing.inner_law, du_i, u_i, q_i)
-    f_o = _traction(bearing.outer_law, du_o, u_o, q_o)
-    m_i = _rolling_resistance(bearing.inner_law, q_i, spin - omega_i, r)
-    m_o = _rolling_resistance(bearing.outer_law, q_o, spin, r)
+    f_i = _traction(bearing.laws, _INNER, du_i, u_i, q_i)
+    f_o = _traction(bearing.laws, _OUTER, du_o, u_o, q_o)
+    m_i = _rolling_resistance(bearing.laws, _INNER, q_i, spin - omega_i, r)
+    m_o = _rolling_resistance(bearing.laws, _OUTER, q_o, spin, r)
     drag = (linear + quadratic * abs(orbit)) * orbit
     loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + angular * spin**2
     return _RollerForces(-r * f_i + r * f_o + m_i + m_o - angular * spin, f_i, f_o, du_i, du_o, u_i, u_o,
@@ -303,7 +290,7 @@ def _rolling_bracket(bearing: _Bearing, cage_speed: float):
     """The middle and half width [rad/s] of the spins between rolling on the outer and on the inner raceway."""
     layout = bearing.layout
     orbit, r = cage_speed * layout.pitch_diameter / 2, layout.roller_radius
-    on_outer, on_inner = -orbit / r, (orbit - bearing.shaft_speed * layout.inner_radius) / r
+    on_outer, on_inner = -orbit / r, (orbit - layout.shaft_speed * layout.inner_radius) / r
     return 0.5 * (on_outer + on_inner), 0.5 * abs(on_outer - on_inner) + 1.0
 
 
@@ -326,10 +313,11 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
     land = 0.0
     if bearing.land_film is not None:
         land = float(np.mean([_film_torque(bearing.land_film, cage_speed, load) for load in normal]))
-    elif bearing.land_law is not None:
-        law = bearing.land_law
-        land = -law.coefficient * float(np.mean(normal)) * bearing.cage_radius * kernel.regularised_sign(
-            law.code, cage_speed * bearing.cage_radius, law.regularisation_speed)
+    elif bearing.laws.kind.size > _LAND:
+        laws = bearing.laws
+        sign = kernel.regularised_sign(laws.friction_law[_LAND], cage_speed * bearing.cage_radius,
+                                       laws.regularisation_speed[_LAND])
+        land = -laws.friction_coefficient[_LAND] * float(np.mean(normal)) * bearing.cage_radius * sign
     torque = -radius * rollers * means["pocket_force"] + land
     state = {"roller_angles": psi, "inner_loads": q_i, "outer_loads": q_o, "roller_speeds": spins,
              "pocket_forces": pocket, "inner_traction": rows.inner_traction, "outer_traction": rows.outer_traction,
