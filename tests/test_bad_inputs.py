@@ -128,6 +128,8 @@ SCENARIO_ROWS = {
                                    "contact.inner_race.traction_curve"),
     "curve model without its curve": (STEADY, ["contact.inner_race.friction_law='ehl'", "contact.inner_race.traction_model='curve'"],
                                       "contact.inner_race.traction_curve"),
+    "EHL rolling resistance on a dry law": (STEADY, ["contact.inner_race.ehl_rolling_resistance=true"],
+                                            "contact.inner_race.ehl_rolling_resistance"),
 }
 
 #: name -> (study file, overrides, field).

@@ -28,7 +28,7 @@ def lubricated_row(rng, k):
               "conductivity": 0.13, "modulus": rng.uniform(1e11, 4e11), "radius": rng.uniform(0.005, 0.05),
               "length": rng.uniform(0.01, 0.06), "roughness": rng.uniform(5e-8, 5e-7), "eyring_stress": 5e6,
               "shear_modulus": rng.uniform(1e7, 1e9), "limiting_shear": 0.07, "curve_a": -0.01, "curve_b": 4.0,
-              "curve_c": 40.0, "curve_d": 0.01}
+              "curve_c": 40.0, "curve_d": 0.01, "rolling_resistance": k % 3 % 2}
     return tuple(values[c] for c in TRACTION_COLUMNS)
 
 

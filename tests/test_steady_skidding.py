@@ -54,10 +54,14 @@ def test_a_weightless_cage_on_its_land_film_feels_petroffs_torque():
     assert solution.land_torque == pytest.approx(-petroff, rel=1e-9)
 
 
-@pytest.mark.parametrize("drag", ["palmgren", "churning"])
+ROLLING_RESISTANCE = ["contact.inner_race.ehl_rolling_resistance=true", "contact.outer_race.ehl_rolling_resistance=true"]
+
+
+@pytest.mark.parametrize("drag", ["palmgren", "churning", "churning, EHL rolling resistance"])
 @pytest.mark.parametrize("load", [2000.0, 6800.0])
 def test_the_drive_power_equals_the_losses(drag, load):
-    scene = build_scene(spec_of(f"load.radial={load}", f"lubricant.model={drag}"))
+    rolling = ROLLING_RESISTANCE if "rolling" in drag else []
+    scene = build_scene(spec_of(f"load.radial={load}", f"lubricant.model={drag.split(',')[0]}", *rolling))
     solution = solve_skidding(scene)
     supplied = -solution.ring_torque * scene.bodies[0].velocity[2]
     assert supplied > 0
@@ -70,6 +74,9 @@ CROSS_CHECKS = {  # (overrides, run end [s]): each settled by then (window halve
     "light, churning drag": (["lubricant.model=churning", "load.radial=6800"], 0.3),
     "light, churning drag, land film": (["lubricant.model=churning", "load.radial=6800", "lubricant.land_film=true",
                                          "bearing.cage_width=0.071"], 0.3),
+    "2 kN, churning drag, land film, EHL rolling resistance": (
+        ["lubricant.model=churning", "load.radial=2000", "lubricant.land_film=true", "bearing.cage_width=0.071",
+         *ROLLING_RESISTANCE], 0.5),
 }
 
 

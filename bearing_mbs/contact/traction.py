@@ -33,6 +33,14 @@ Film-shear traction, two models (``TRACTION_MODELS``):
 * ``curve`` — the empirical form fitted to measured traction curves by bearing-dynamics codes,
   :math:`\mu_f = \mathrm{sign}(s)\,[(A + B|s|)\,e^{-C|s|} + D]` with :math:`A + D = 0` (no jump at zero slip).
 
+Hydrodynamic rolling resistance (optional, ``ehl_rolling_resistance``): the contact's rolling force :math:`F_R`
+(:func:`.ehl.rolling_force`, reduced by the film's inlet-heating factor :math:`\phi_T` when that is on: the force
+is made in the inlet, as the film is) acts as a moment :math:`M = F_R R` against the pair's relative spin, R the
+reduced radius. In pure rolling the relative spin of a roller on a raceway is :math:`u/R`, so the moment
+dissipates exactly :math:`F_R u`, whichever ring turns; it is added to the dry arm's moment and shares its
+regularised sign (:func:`bearing_mbs.contact.friction.rolling_resistance_moment`), as the equivalent arm
+:math:`F_R R/Q` (:func:`rolling_arm`).
+
 The film thickness in the shear rate is floored at the roughness σ: below it the asperities carry the load
 (ψ → 1) and the film-shear term would otherwise stiffen without bound as the film vanishes.
 
@@ -54,17 +62,17 @@ _EYRING = TRACTION_MODELS.index("eyring")
 
 #: Columns of a pair's traction row (``PairLaw.traction``), in order: model and film-formula codes, thermal
 #: reduction (1/0), η0 [Pa s], α [1/Pa], β [1/K], k [W/(m K)], E' [Pa], R [m], l [m], σ [m], τ0 [Pa], G [Pa],
-#: Λ_L [-], and the curve's A, B, C, D [-].
+#: Λ_L [-], the curve's A, B, C, D [-], and hydrodynamic rolling resistance (1/0).
 TRACTION_COLUMNS = (
     "model", "film_formula", "thermal", "viscosity", "pressure_viscosity", "temperature_viscosity",
     "conductivity", "modulus", "radius", "length", "roughness", "eyring_stress", "shear_modulus",
-    "limiting_shear", "curve_a", "curve_b", "curve_c", "curve_d",
+    "limiting_shear", "curve_a", "curve_b", "curve_c", "curve_d", "rolling_resistance",
 )
 N_TRACTION_COLUMNS = len(TRACTION_COLUMNS)
 # Column indices, read by numba as compile-time constants (one order: TRACTION_COLUMNS).
 (_MODEL, _FORMULA, _THERMAL, _VISCOSITY, _PRESSURE_VISCOSITY, _TEMPERATURE_VISCOSITY, _CONDUCTIVITY, _MODULUS,
  _RADIUS, _LENGTH, _ROUGHNESS, _EYRING_STRESS, _SHEAR_MODULUS, _LIMITING_SHEAR, _CURVE_A, _CURVE_B, _CURVE_C,
- _CURVE_D) = range(N_TRACTION_COLUMNS)
+ _CURVE_D, _ROLLING_RESISTANCE) = range(N_TRACTION_COLUMNS)
 
 
 @register_jitable
@@ -129,6 +137,21 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
         fluid = curve_traction(slip / speed, row[_CURVE_A], row[_CURVE_B], row[_CURVE_C], row[_CURVE_D])
     boundary = boundary_coefficient * friction.erf_sign(slip, regularisation_speed)
     return share * boundary + (1.0 - share) * fluid, minimum, film_parameter
+
+
+@register_jitable
+def rolling_arm(row, rolling, normal_force):
+    """The equivalent arm F_R φ_T R/Q [m] of the hydrodynamic rolling resistance at rolling speed u [m/s] and normal
+    force Q [N]; 0 with it off or out of contact."""
+    if row[_ROLLING_RESISTANCE] == 0.0 or normal_force <= 0.0:
+        return 0.0
+    speed, viscosity, radius = abs(rolling), row[_VISCOSITY], row[_RADIUS]
+    force = ehl.rolling_force(speed, normal_force / row[_LENGTH], viscosity, row[_PRESSURE_VISCOSITY],
+                              row[_MODULUS], radius, row[_LENGTH])
+    if row[_THERMAL] > 0.0:
+        force *= ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY],
+                                                           row[_CONDUCTIVITY]))
+    return force * radius / normal_force
 
 
 def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisation_speed):

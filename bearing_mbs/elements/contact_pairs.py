@@ -23,7 +23,7 @@ from bearing_mbs.contact.kernel import (
     body_trigonometry,
     pair_motion,
     pair_position,
-    regularised_sign,
+    rolling_moment,
     tangential_force,
 )
 from bearing_mbs.contact.kinematics import PAIR_KINDS
@@ -111,10 +111,8 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
             fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
             law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
             ft = tangential_force(law, fn, pairs.friction_coefficient[k], slip, rolling, vreg, pairs.traction[k])
-            arm = pairs.rolling_resistance_arm[k]
-            if arm > 0.0:
-                spin_sign = regularised_sign(law, spin * pairs.radius_b[k], vreg)
-                moment = friction.rolling_resistance_moment(fn, arm, spin_sign)
+            moment = rolling_moment(law, fn, pairs.rolling_resistance_arm[k], spin, rb, rolling, vreg,
+                                    pairs.traction[k])
             loss = -(fn - elastic) * gap_rate - ft * slip - moment * spin
             fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
             forces[3 * b] += fx
@@ -144,11 +142,13 @@ def add_forces_twin(pairs, t, q, v, latched, forces, pair_out, power, complete):
     ft = friction.friction_force(
         fn, pairs.friction_coefficient, regularised_sign_twin(pairs.friction_law, slip, pairs.regularisation_speed)
     )
+    arm = pairs.rolling_resistance_arm.copy()
     for k in np.flatnonzero((pairs.friction_law == FRICTION_LAWS.index("ehl")) & (fn > 0)):
         ft[k] = -fn[k] * traction.ehl_traction(pairs.traction[k], slip[k], rolling[k], fn[k],
                                                pairs.friction_coefficient[k], pairs.regularisation_speed[k])[0]
+        arm[k] += traction.rolling_arm(pairs.traction[k], rolling[k], fn[k])
     spin_sign = regularised_sign_twin(pairs.friction_law, spin * pairs.radius_b, pairs.regularisation_speed)
-    moment = friction.rolling_resistance_moment(fn, pairs.rolling_resistance_arm, spin_sign)
+    moment = friction.rolling_resistance_moment(fn, arm, spin_sign)
     damping = fn - normal.elastic_force(gap, pairs.stiffness, pairs.exponent)
     loss = -damping * gap_rate - ft * slip - moment * spin
 

@@ -39,7 +39,8 @@ class ContactSpec:
     raceways and rollers). eyring_stress τ0 [Pa] in [1e5, 1e8] (default 5e6), shear_modulus G [Pa] in [1e6, 1e10]
     (default 1e8), limiting_shear_coefficient Λ_L in [0.01, 0.2] (default 0.07): the ``eyring`` model.
     traction_curve: (A, B, C, D) of the ``curve`` model, with B > 0, C > 0 and |A + D| <= 1e-3 (no jump at zero
-    slip); required by it.
+    slip); required by it. ehl_rolling_resistance: the contact's hydrodynamic rolling resistance (Zhou–Hoeprich,
+    :func:`bearing_mbs.contact.ehl.rolling_force`), added to the dry arm's (default false; ``ehl`` only).
     """
 
     normal_law: str = "lankarani_nikravesh"
@@ -60,6 +61,7 @@ class ContactSpec:
     shear_modulus: float = 1e8
     limiting_shear_coefficient: float = 0.07
     traction_curve: tuple[float, ...] | None = None
+    ehl_rolling_resistance: bool = False
 
     def __post_init__(self):
         one_of("normal_law", self.normal_law, NORMAL_LAWS)
@@ -101,6 +103,11 @@ class ContactSpec:
             require(b > 0 and c > 0, "traction_curve", curve, "needs B > 0 and C > 0")
             require(abs(a + d) <= 1e-3, "traction_curve", curve, "needs |A + D| <= 1e-3 (no jump at zero slip)")
             object.__setattr__(self, "traction_curve", tuple(float(x) for x in curve))
+        require(isinstance(self.ehl_rolling_resistance, bool), "ehl_rolling_resistance", self.ehl_rolling_resistance,
+                "must be true or false")
+        if self.ehl_rolling_resistance:
+            require(self.friction_law == "ehl", "ehl_rolling_resistance", True,
+                    f"needs friction_law = 'ehl' (the film it comes from), not {self.friction_law!r}")
         if self.friction_law == "ehl" and self.traction_model == "curve":
             require(self.traction_curve is not None, "traction_curve", None,
                     "the curve traction model needs (A, B, C, D)")

@@ -242,6 +242,7 @@ def traction_row(contact, lubricant, reduced_modulus: float, radius: float, leng
         "conductivity": oil.thermal_conductivity, "modulus": reduced_modulus, "radius": radius, "length": length,
         "roughness": contact.roughness, "eyring_stress": contact.eyring_stress, "shear_modulus": contact.shear_modulus,
         "limiting_shear": contact.limiting_shear_coefficient,
+        "rolling_resistance": float(contact.ehl_rolling_resistance),
     }
     curve = contact.traction_curve or (0.0, 0.0, 0.0, 0.0)
     values.update(zip(("curve_a", "curve_b", "curve_c", "curve_d"), curve))
