@@ -5,10 +5,13 @@ verified-core issue asks; central finite differences of the gap for the gap rate
 tolerance 1e-7 relative); Newton's third law and the angular-momentum balance for the assembly.
 """
 
+import math
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
-from bearing_mbs.contact import FRICTION_LAWS, PAIR_KINDS, kernel, twin
+from bearing_mbs.contact import FRICTION_LAWS, PAIR_KINDS, kernel, traction, twin
 from bearing_mbs.contact.traction import TRACTION_COLUMNS
 from bearing_mbs.core.scene import (
     GROUND,
@@ -214,3 +217,45 @@ def test_pure_rolling_inside_a_fixed_ring_has_zero_slip_and_the_orbital_rolling_
     _, pair_out = evaluate(scene_forces, pack_scene(scene), 0.0, *scene.initial_state(), np.zeros(1))
     assert abs(pair_out[0, 2]) < 1e-12
     assert abs(pair_out[0, 7]) == pytest.approx(orbit * ring, rel=1e-12)
+
+
+def lubricated(scene, rng, rolling_resistance):
+    """The scene with every pair lubricated (``ehl``, random traction rows) and its hydrodynamic rolling
+    resistance on or off; the same rows for the same generator state."""
+    column = TRACTION_COLUMNS.index("rolling_resistance")
+
+    def law(k, pair):
+        row = list(lubricated_row(rng, k))
+        row[column] = float(rolling_resistance)
+        return replace(pair, law=replace(pair.law, friction_law="ehl", traction=tuple(row)))
+
+    return replace(scene, pairs=tuple(law(k, p) for k, p in enumerate(scene.pairs)))
+
+
+def test_the_hydrodynamic_rolling_resistance_dissipates_its_force_times_the_rolling_speed():
+    """Its forces (a tangential pair force and a couple, bearing_mbs.contact.traction) must do the power
+    −F_R erf(2u/v_reg) u on the bodies, u the rolling speed of the pair kinematics, in any motion (rolling or
+    sliding) and on every pair kind. The power is summed from the body forces and velocities (sum F·v), not from
+    the kernel's loss column, which must agree too. 1e-9 relative, or 1e-12 of the sums they are differences of."""
+    rng = np.random.default_rng(8)
+    base = random_scene(rng)
+    scenes = [lubricated(base, np.random.default_rng(9), flag) for flag in (True, False)]
+    on, off = (pack_scene(scene) for scene in scenes)
+    kinds = np.array([p.kind for p in base.pairs])
+    touched = set()
+    for _ in range(30):
+        q, v, latched = random_state(rng, base)
+        forces_on, pairs_on = evaluate(scene_forces, on, 0.0, q, v, latched)
+        forces_off, pairs_off = evaluate(scene_forces, off, 0.0, q, v, latched)
+        touching = pairs_on[:, 3] > 0
+        rolling = pairs_on[:, 7]
+        expected = sum(traction.rolling_force(np.asarray(scenes[0].pairs[k].law.traction), rolling[k], pairs_on[k, 3])
+                       * math.erf(2 * rolling[k] / base.pairs[k].law.regularisation_speed) * rolling[k]
+                       for k in np.flatnonzero(touching))
+        assert expected > 0
+        power = np.dot(forces_on - forces_off, v)  # the difference of two sums of normal forces up to ~1e6 N
+        assert power == pytest.approx(-expected, rel=1e-9, abs=1e-12 * np.abs(forces_on * v).sum())
+        rounding = 1e-12 * np.abs(pairs_on[:, 6]).sum()  # the loss column sums traction losses up to ~1e4 W
+        assert np.sum(pairs_on[:, 6] - pairs_off[:, 6]) == pytest.approx(expected, rel=1e-9, abs=rounding)
+        touched.update(kinds[touching])
+    assert touched == set(PAIR_KINDS)

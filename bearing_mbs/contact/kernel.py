@@ -53,18 +53,6 @@ def tangential_force(law, normal_force, coefficient, slip, rolling, regularisati
 
 
 @numba.njit(cache=True, inline="always")
-def rolling_moment(law, normal_force, arm, spin, radius_b, rolling, regularisation_speed, traction_row):
-    """Rolling-resistance moment on body b [N m] of a pair in contact at relative spin ω_b − ω_a [rad/s]: the dry
-    arm's, plus the hydrodynamic rolling resistance's for ``ehl`` (its equivalent arm, :mod:`.traction`)."""
-    if law == _EHL:
-        arm += traction.rolling_arm(traction_row, rolling, normal_force)
-    if arm <= 0.0:
-        return 0.0
-    spin_sign = regularised_sign(law, spin * radius_b, regularisation_speed)
-    return friction.rolling_resistance_moment(normal_force, arm, spin_sign)
-
-
-@numba.njit(cache=True, inline="always")
 def body_trigonometry(q):
     """cos θ and sin θ of every body, computed once per evaluation rather than once per pair."""
     bodies = q.size // 3

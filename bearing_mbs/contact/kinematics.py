@@ -23,6 +23,9 @@ from numba.extending import register_jitable
 
 #: Pair kinds in the order of their integer codes in the compiled kernel.
 PAIR_KINDS = ("circle_line", "circle_circle", "circle_in_circle", "circle_point")
+#: Where b's circle sits against a's feature, per kind (see :func:`contact_point_share`): 0 on a line, +1 outside a
+#: circle or point, −1 inside a hollow circle.
+ORIENTATION = (0.0, 1.0, -1.0, 1.0)
 
 _TINY = 1e-300
 
@@ -95,6 +98,16 @@ def centre_line_rate(nx, ny, relative_vx, relative_vy, distance):
     centre velocity relative to that point: the normal of a circle–circle, hollow or point pair turns with
     it (with the opposite sign for the hollow circle, whose normal points inwards)."""
     return (-ny * relative_vx + nx * relative_vy) / distance
+
+
+@register_jitable
+def contact_point_share(orientation, radius_a, radius_b, gap):
+    r"""The share w [-] of a's centre of curvature in the contact point's motion along the tangent,
+    :math:`t\cdot\dot p = (1 - w)\,t\cdot\dot c_b + w\,t\cdot\dot c_a`, as :func:`rolling_speed` moves it:
+    :math:`w = r_b/d` outside a circle or point (``orientation`` +1), :math:`-r_b/d` inside a hollow circle (−1),
+    d the centres' distance; 0 on a line (0), where instead :math:`t\cdot\dot p = t\cdot\dot c_b - r_b\omega_a`."""
+    distance = radius_a + orientation * (radius_b + gap)
+    return orientation * radius_b / np.maximum(distance, _TINY)
 
 
 @register_jitable

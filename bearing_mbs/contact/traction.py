@@ -34,12 +34,17 @@ Film-shear traction, two models (``TRACTION_MODELS``):
   :math:`\mu_f = \mathrm{sign}(s)\,[(A + B|s|)\,e^{-C|s|} + D]` with :math:`A + D = 0` (no jump at zero slip).
 
 Hydrodynamic rolling resistance (optional, ``ehl_rolling_resistance``): the contact's rolling force :math:`F_R`
-(:func:`.ehl.rolling_force`, reduced by the film's inlet-heating factor :math:`\phi_T` when that is on: the force
-is made in the inlet, as the film is) acts as a moment :math:`M = F_R R` against the pair's relative spin, R the
-reduced radius. In pure rolling the relative spin of a roller on a raceway is :math:`u/R`, so the moment
-dissipates exactly :math:`F_R u`, whichever ring turns; it is added to the dry arm's moment and shares its
-regularised sign (:func:`bearing_mbs.contact.friction.rolling_resistance_moment`), as the equivalent arm
-:math:`F_R R/Q` (:func:`rolling_arm`).
+(:func:`.ehl.rolling_force`; reduced by the film's inlet-heating factor :math:`\phi_T` when that is on, our choice:
+the force is made in the inlet, as the film is) against the entrainment, :math:`f = F_R\,\varphi(u)` with the
+boundary friction's regularised sign φ at v_reg. It is the inlet's Poiseuille shear, :math:`-f/2` on each surface
+at the contact point (the same direction on both), balanced by the tangential part of the film pressure on the two
+curved surfaces, which passes through their centres of curvature and is shared as the contact point's motion is
+(:func:`.kinematics.contact_point_share` w): :math:`(1 - w) f` at b's centre, :math:`w f` at a's. Gathered at the
+contact point this is a tangential pair force :math:`(1/2 - w) f` on b and a couple :math:`(1 - w) r_b f`
+(:func:`rolling_resistance`; a receives the opposite of both). Their power is :math:`-f u` in any motion,
+rolling or sliding, since :math:`(1/2 - w)\Delta u + (1 - w) r_b \Delta\omega = -u` is a kinematic identity
+(tests/test_kernel.py checks it): the inlet's viscous loss, never a source. A moment against the relative spin
+alone would have the right power in pure rolling only, and would pull a stalled roller towards the ring's spin.
 
 The film thickness in the shear rate is floored at the roughness σ: below it the asperities carry the load
 (ψ → 1) and the film-shear term would otherwise stiffen without bound as the film vanishes.
@@ -140,18 +145,28 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
 
 
 @register_jitable
-def rolling_arm(row, rolling, normal_force):
-    """The equivalent arm F_R φ_T R/Q [m] of the hydrodynamic rolling resistance at rolling speed u [m/s] and normal
-    force Q [N]; 0 with it off or out of contact."""
+def rolling_force(row, rolling, normal_force):
+    """The hydrodynamic rolling force F_R φ_T [N] (magnitude) at rolling speed u [m/s] and normal force Q [N]; 0
+    with it off or out of contact."""
     if row[_ROLLING_RESISTANCE] == 0.0 or normal_force <= 0.0:
         return 0.0
-    speed, viscosity, radius = abs(rolling), row[_VISCOSITY], row[_RADIUS]
-    force = ehl.rolling_force(speed, normal_force / row[_LENGTH], viscosity, row[_PRESSURE_VISCOSITY],
-                              row[_MODULUS], radius, row[_LENGTH])
+    speed, viscosity, length = abs(rolling), row[_VISCOSITY], row[_LENGTH]
+    force = ehl.rolling_force(speed, normal_force / length, viscosity, row[_PRESSURE_VISCOSITY], row[_MODULUS],
+                              row[_RADIUS], length)
     if row[_THERMAL] > 0.0:
         force *= ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY],
                                                            row[_CONDUCTIVITY]))
-    return force * radius / normal_force
+    return force
+
+
+@register_jitable
+def rolling_resistance(force, rolling, regularisation_speed, share, radius_b):
+    r"""(tangential force on b [N] along t, couple on b [N m]) of the rolling resistance of magnitude ``force``
+    F_R [N] (:func:`rolling_force`) at rolling speed u [m/s], with a's share w of the contact point's motion
+    (:func:`.kinematics.contact_point_share`) and b's radius r_b [m]: with :math:`f = F_R\,\mathrm{erf}(2u/v_{reg})`,
+    :math:`((1/2 - w) f,\ (1 - w) r_b f)`; a receives the opposite. Scalars or arrays."""
+    signed = force * friction.erf_sign(rolling, regularisation_speed)
+    return (0.5 - share) * signed, (1.0 - share) * radius_b * signed
 
 
 def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisation_speed):

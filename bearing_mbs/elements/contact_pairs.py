@@ -15,7 +15,7 @@ from typing import NamedTuple
 import numba
 import numpy as np
 
-from bearing_mbs.contact import friction, normal, traction
+from bearing_mbs.contact import friction, kinematics, normal, traction
 from bearing_mbs.contact.friction import FRICTION_LAWS
 from bearing_mbs.contact.kernel import (
     N_PAIR_OUTPUTS,
@@ -23,15 +23,17 @@ from bearing_mbs.contact.kernel import (
     body_trigonometry,
     pair_motion,
     pair_position,
-    rolling_moment,
+    regularised_sign,
     tangential_force,
 )
-from bearing_mbs.contact.kinematics import PAIR_KINDS
+from bearing_mbs.contact.kinematics import ORIENTATION, PAIR_KINDS
 from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
 from bearing_mbs.contact.twin import pair_geometry
 from bearing_mbs.contact.twin import regularised_sign as regularised_sign_twin
 from bearing_mbs.core.force_element import ForceElement
 from bearing_mbs.core.scene import ContactPair
+
+_EHL = FRICTION_LAWS.index("ehl")  # read by numba as a compile-time constant
 
 
 class PairArrays(NamedTuple):
@@ -111,8 +113,17 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
             fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
             law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
             ft = tangential_force(law, fn, pairs.friction_coefficient[k], slip, rolling, vreg, pairs.traction[k])
-            moment = rolling_moment(law, fn, pairs.rolling_resistance_arm[k], spin, rb, rolling, vreg,
-                                    pairs.traction[k])
+            arm = pairs.rolling_resistance_arm[k]
+            if arm > 0.0:
+                spin_sign = regularised_sign(law, spin * pairs.radius_b[k], vreg)
+                moment = friction.rolling_resistance_moment(fn, arm, spin_sign)
+            if law == _EHL:  # the hydrodynamic rolling resistance, if it is on (a tangential force and a couple)
+                rolling_force = traction.rolling_force(pairs.traction[k], rolling, fn)
+                if rolling_force > 0.0:
+                    share = kinematics.contact_point_share(ORIENTATION[kind], ra, rb, gap)
+                    tangential, couple = traction.rolling_resistance(rolling_force, rolling, vreg, share, rb)
+                    ft += tangential
+                    moment += couple
             loss = -(fn - elastic) * gap_rate - ft * slip - moment * spin
             fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
             forces[3 * b] += fx
@@ -142,13 +153,17 @@ def add_forces_twin(pairs, t, q, v, latched, forces, pair_out, power, complete):
     ft = friction.friction_force(
         fn, pairs.friction_coefficient, regularised_sign_twin(pairs.friction_law, slip, pairs.regularisation_speed)
     )
-    arm = pairs.rolling_resistance_arm.copy()
-    for k in np.flatnonzero((pairs.friction_law == FRICTION_LAWS.index("ehl")) & (fn > 0)):
+    rolling_force = np.zeros_like(fn)
+    for k in np.flatnonzero((pairs.friction_law == _EHL) & (fn > 0)):
         ft[k] = -fn[k] * traction.ehl_traction(pairs.traction[k], slip[k], rolling[k], fn[k],
                                                pairs.friction_coefficient[k], pairs.regularisation_speed[k])[0]
-        arm[k] += traction.rolling_arm(pairs.traction[k], rolling[k], fn[k])
+        rolling_force[k] = traction.rolling_force(pairs.traction[k], rolling[k], fn[k])
     spin_sign = regularised_sign_twin(pairs.friction_law, spin * pairs.radius_b, pairs.regularisation_speed)
-    moment = friction.rolling_resistance_moment(fn, arm, spin_sign)
+    moment = friction.rolling_resistance_moment(fn, pairs.rolling_resistance_arm, spin_sign)
+    share = kinematics.contact_point_share(np.asarray(ORIENTATION)[pairs.kind], pairs.radius_a, pairs.radius_b, gap)
+    tangential, couple = traction.rolling_resistance(rolling_force, rolling, pairs.regularisation_speed, share,
+                                                     pairs.radius_b)
+    ft, moment = ft + tangential, moment + couple
     damping = fn - normal.elastic_force(gap, pairs.stiffness, pairs.exponent)
     loss = -damping * gap_rate - ft * slip - moment * spin
 

@@ -54,7 +54,7 @@ import numpy as np
 
 from bearing_mbs.contact.friction import ZERO_SLIP_SLOPE
 from bearing_mbs.contact.line_contact import power_law_stiffness
-from bearing_mbs.contact.traction import rolling_arm, zero_slip_slope
+from bearing_mbs.contact.traction import zero_slip_slope
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed, roller_centrifugal_force
@@ -278,13 +278,11 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
 
     def friction(law, load):
         slope = ZERO_SLIP_SLOPE[law.friction_law] / law.regularisation_speed
-        damping, arm = law.friction_coefficient * load * slope, law.rolling_resistance_arm
+        damping = law.friction_coefficient * load * slope
         if law.friction_law == "ehl" and load > 0:  # the film's slope, steepest at the slowest rolling
-            row = np.asarray(law.traction)
-            damping = load * max(zero_slip_slope(row, speed, load, law.friction_coefficient,
+            damping = load * max(zero_slip_slope(np.asarray(law.traction), speed, load, law.friction_coefficient,
                                                  law.regularisation_speed) for speed in layout.rolling_speeds())
-            arm += max(rolling_arm(row, speed, load) for speed in layout.rolling_speeds())
-        return damping, arm * load * slope * r
+        return damping, law.rolling_resistance_arm * load * slope * r
 
     ci, ri = friction(layout.inner_law, inner_load)
     co, ro = friction(layout.outer_law, outer_load)

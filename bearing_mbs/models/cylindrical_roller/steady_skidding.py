@@ -17,9 +17,9 @@ the orbit :math:`\omega_c` (:func:`.quasistatic.solve_radial`). Along the orbit'
   cage: :math:`u_i = \tfrac12[(\omega_i - \omega_c) r_i + (\omega_c - \omega_j) r]`,
   :math:`u_o = \tfrac12[\omega_c r_o + (\omega_c - \omega_j) r]`;
 * tractions on the roller :math:`F = -\mu(\Delta u, u, Q)\,Q` (the pair's law), rolling-resistance moments
-  :math:`-a\,Q\,\varphi(\omega_{rel} r)` (with the equivalent arm :math:`F_R R/Q` of the hydrodynamic rolling
-  resistance added when that is on), drag :math:`-(c + c_2 v) v` on the centre at
-  :math:`v = \omega_c R` and :math:`-c_\theta \omega_j` on the spin.
+  :math:`-a\,Q\,\varphi(\omega_{rel} r)` and, with ``ehl_rolling_resistance``, the hydrodynamic rolling
+  resistance's tangential force and couple (:func:`bearing_mbs.contact.traction.rolling_resistance`), drag
+  :math:`-(c + c_2 v) v` on the centre at :math:`v = \omega_c R` and :math:`-c_\theta \omega_j` on the spin.
 
 Each roller's spin follows :math:`I\dot\omega_j = -r F_i + r F_o + M_{R,i} + M_{R,o} - c_\theta\omega_j` around
 its orbit (:math:`\psi = \omega_c t`, periodic): held at its balance in the load zone, coasting outside it. Its
@@ -47,7 +47,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from bearing_mbs.contact import kernel
+from bearing_mbs.contact import kernel, traction
+from bearing_mbs.contact.friction import FRICTION_LAWS, rolling_resistance_moment
+from bearing_mbs.contact.kinematics import contact_point_share
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
 from bearing_mbs.elements.contact_pairs import PairArrays, pack
@@ -174,12 +176,20 @@ def _traction(laws: PairArrays, k: int, sliding, rolling, load):
                                    laws.regularisation_speed[k], laws.traction[k])
 
 
-def _rolling_resistance(laws: PairArrays, k: int, load, relative_spin, radius, rolling):
-    """The rolling-resistance moment [N m] on the roller at contact k: the compiled kernel's."""
-    if load <= 0.0:
-        return 0.0
-    return kernel.rolling_moment(laws.friction_law[k], load, laws.rolling_resistance_arm[k], relative_spin, radius,
-                                 rolling, laws.regularisation_speed[k], laws.traction[k])
+def _rolling_resistance(laws: PairArrays, k: int, load, relative_spin, radius):
+    """The rolling-resistance moment [N m] on the roller at contact k (the kernel's regularised sign of the rim
+    speed)."""
+    spin_sign = kernel.regularised_sign(laws.friction_law[k], relative_spin * radius, laws.regularisation_speed[k])
+    return rolling_resistance_moment(load, laws.rolling_resistance_arm[k], spin_sign)
+
+
+def _hydrodynamic_rolling(laws: PairArrays, k: int, load, rolling, share, radius):
+    """(tangential force along the pair's tangent [N], couple [N m]) on the roller of the hydrodynamic rolling
+    resistance at contact k (0 unless it is on): the compiled kernel's."""
+    if laws.friction_law[k] != FRICTION_LAWS.index("ehl"):
+        return 0.0, 0.0
+    force = traction.rolling_force(laws.traction[k], rolling, load)
+    return traction.rolling_resistance(force, rolling, laws.regularisation_speed[k], share, radius)
 
 
 class _RollerForces(NamedTuple):
@@ -205,10 +215,13 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
     u_i = 0.5 * ((omega_i - cage_speed) * r_i + (cage_speed - spin) * r)
     u_o = 0.5 * (cage_speed * r_o + (cage_speed - spin) * r)
-    f_i = _traction(bearing.laws, _INNER, du_i, u_i, q_i)
-    f_o = _traction(bearing.laws, _OUTER, du_o, u_o, q_o)
-    m_i = _rolling_resistance(bearing.laws, _INNER, q_i, spin - omega_i, r, u_i)
-    m_o = _rolling_resistance(bearing.laws, _OUTER, q_o, spin, r, u_o)
+    # the inner contact's tangent is e_θ, the outer's −e_θ; u_i, u_o are the rolling speeds along them
+    g_i, c_i = _hydrodynamic_rolling(bearing.laws, _INNER, q_i, u_i, contact_point_share(1.0, r_i, r, 0.0), r)
+    g_o, c_o = _hydrodynamic_rolling(bearing.laws, _OUTER, q_o, u_o, contact_point_share(-1.0, r_o, r, 0.0), r)
+    f_i = _traction(bearing.laws, _INNER, du_i, u_i, q_i) + g_i
+    f_o = _traction(bearing.laws, _OUTER, du_o, u_o, q_o) - g_o
+    m_i = _rolling_resistance(bearing.laws, _INNER, q_i, spin - omega_i, r) + c_i
+    m_o = _rolling_resistance(bearing.laws, _OUTER, q_o, spin, r) + c_o
     drag = (linear + quadratic * abs(orbit)) * orbit
     loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + angular * spin**2
     return _RollerForces(-r * f_i + r * f_o + m_i + m_o - angular * spin, f_i, f_o, du_i, du_o, u_i, u_o,
