@@ -231,3 +231,30 @@ def test_the_rolling_force_is_zhou_and_hoepriches(race, load):
     central = ehl.film_thickness(0, speed, load, eta, alpha, modulus, radius)[0]
     assert 1.0 < force / (central * length / alpha) < 5.0
     assert ehl.rolling_force(0.0, load, eta, alpha, modulus, radius, length) == 0.0
+
+
+def test_a_light_contact_rolls_in_martins_rigid_isoviscous_regime():
+    """Reynolds' equation for a rigid cylinder rolling on a plane with an isoviscous oil, solved here by quadrature:
+    dp/dx = 12 eta u (h - h_m)/h^3, h = h_0 + x^2/(2R), p = 0 far upstream and p = dp/dx = 0 at the outlet x_m.
+    Its load is Martin's w = 4.9 eta u R/h_0 (H. M. Martin, Engineering 102 (1916) 119; 2 %, his rounding), and
+    the Poiseuille shear of its two surfaces, integral of h dp/dx, is the rolling force the code uses at light load
+    (1e-3). At 50 N on a seed contact (60 C, 9 m/s) the rigid force is below Zhou-Hoeprich's and is the one used;
+    it vanishes with the load, so the force grows continuously as a contact closes."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    def pressure_gradient(xi, xi_m):  # dimensionless: x = xi (2 R h_0)^(1/2), h = h_0 (1 + xi^2)
+        return (xi * xi - xi_m * xi_m) / (1 + xi * xi) ** 3
+
+    xi_m = brentq(lambda m: quad(pressure_gradient, -np.inf, m, args=(m,))[0], 0.1, 1.0)
+    pressure = quad(lambda x: quad(pressure_gradient, -np.inf, x, args=(xi_m,))[0], -np.inf, xi_m, limit=200)[0]
+    load_coefficient = 24 * pressure  # w = c eta u R/h_0
+    assert load_coefficient == pytest.approx(4.9, rel=0.02)
+    shear = quad(lambda x: (x * x - xi_m * xi_m) / (1 + x * x) ** 2, -np.inf, xi_m)[0]
+    eta, u, length, load = SEED["eta"], 9.0, SEED["length"], 50.0
+    h_0 = load_coefficient * eta * u * SEED["radius"] * length / load
+    rigid = 12 * shear * eta * u * length * math.sqrt(2 * SEED["radius"] / h_0)
+    args = (eta, SEED["alpha"], SEED["modulus"], SEED["radius"], length)
+    assert ehl.rolling_force(u, load / length, *args) == pytest.approx(rigid, rel=1e-3)
+    assert rigid < zhou_hoeprich(u, load / length, *args)
+    assert ehl.rolling_force(u, 1e-9 / length, *args) < 1e-3 * rigid

@@ -37,7 +37,15 @@ fully flooded numerical line-contact solutions ("Torque of tapered roller bearin
 
 It hardly depends on the load (:math:`W^{0.0126}`) and grows as :math:`(\eta_0 u)^{0.658}`, like the film:
 it is of the order of :math:`h_c l/\alpha`, the film times the inlet pressure at which the oil's viscosity
-runs away.
+runs away. As the load vanishes the contact leaves the elastohydrodynamic regime for the rigid, isoviscous one of
+H. M. Martin (1916): with the Reynolds outlet condition the pressure ends at :math:`x = 0.4751\,(2Rh_0)^{1/2}`,
+the film carries :math:`w = 4.895\,\eta_0 u R/h_0`, and the Poiseuille shear on the two surfaces,
+:math:`\int h\,\mathrm dp/\mathrm dx\,\mathrm dx`, sums to
+:math:`F_{R,0} = 12 \times 0.5422\,\eta_0 u l\,(2R/h_0)^{1/2} = 4.159\,(\eta_0 u l Q)^{1/2}`, which vanishes
+with the load (our closed-form integration, checked against a numerical solution of Reynolds' equation in the
+tests). :func:`rolling_force` takes the smaller of the two, so the force grows continuously from zero as a contact
+closes (the fit alone would jump to ~70 % of its value at the first micronewton) and the light contacts, such as
+rollers pressed on the outer ring by their centrifugal force alone, get the rigid regime's.
 
 The Hertz line contact (K. L. Johnson, *Contact Mechanics*, 1985, §4.2) has the half-width
 :math:`b = (8 w R/\pi E')^{1/2}` and peak pressure :math:`p_h = 2w/(\pi b) = (w E'/2\pi R)^{1/2}`; the mean
@@ -61,6 +69,8 @@ _PAN_HAMROCK = ((2.922, 0.692, 0.470, -0.166), (1.714, 0.694, 0.568, -0.128))
 _DOWSON_HIGGINSON = ((3.06, 0.69, 0.56, -0.10), (2.65, 0.70, 0.54, -0.13))
 #: Zhou–Hoeprich's coefficient and exponents (of GU and W).
 _ZHOU_HOEPRICH = (4.318, 0.658, 0.0126)
+#: The rigid, isoviscous rolling force's coefficient, F_R,0 = 4.159 (η0 u l Q)^(1/2).
+_RIGID_ROLLING = 4.159
 #: Murch–Wilson's constants.
 _MURCH_WILSON = (3.94, 0.62)
 
@@ -106,12 +116,15 @@ def film_thickness(formula, speed, load_per_length, viscosity, pressure_viscosit
 
 @register_jitable
 def rolling_force(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length):
-    """Zhou–Hoeprich's isothermal hydrodynamic rolling force F_R [N] of a line contact of length l [m] at
-    entrainment speed u [m/s] >= 0 and load per length w [N/m] > 0; 0 at u = 0."""
+    """The isothermal hydrodynamic rolling force F_R [N] of a line contact of length l [m] at entrainment speed
+    u [m/s] >= 0 and load per length w [N/m] >= 0: Zhou–Hoeprich's, or the rigid, isoviscous one where that is
+    smaller (light loads); 0 at u = 0 or w = 0."""
     c, e_gu, e_w = _ZHOU_HOEPRICH
     u_group = viscosity * speed / (modulus * radius)
     w_group = load_per_length / (modulus * radius)
-    return c / pressure_viscosity * (pressure_viscosity * modulus * u_group) ** e_gu * w_group**e_w * radius * length
+    elastic = c / pressure_viscosity * (pressure_viscosity * modulus * u_group) ** e_gu * w_group**e_w * radius * length
+    rigid = _RIGID_ROLLING * np.sqrt(viscosity * speed * load_per_length) * length
+    return np.minimum(elastic, rigid)
 
 
 @register_jitable

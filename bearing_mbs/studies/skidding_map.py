@@ -9,11 +9,11 @@ shaft speed given, a few seconds each where a dynamic run at light load needs se
 * ``skidding_map.csv`` and ``skidding_map.md``: a row per point (:data:`COLUMNS`);
 * ``skidding_map.png``: cage slip against the total radial load, a panel per speed and a curve per temperature,
   with the catalogue minimum-load band when one is given;
-* ``roller_slip.png``: the rollers' slide-to-roll ratio at the inner and outer raceway around the orbit, in and
-  out of the load zone, at each load (base speed and temperature).
+* ``roller_slip.png``: the roller slip 1 − ω_j/ω_j,epi (the speed deficit roller-speed sensors measure) around the
+  orbit, in and out of the load zone, at each load (base speed and temperature).
 
-The slide-to-roll ratio of a contact is Δu/u (sliding over rolling speed), positive where the roller's surface
-runs ahead of the raceway's.
+The rows also give the largest roller slip in and out of the load zone and the largest slide-to-roll ratio Δu/u
+(sliding over rolling speed) of the loaded inner contacts.
 """
 
 from __future__ import annotations
@@ -39,9 +39,9 @@ log = logging.getLogger(__name__)
 #: Output file names (in the output directory).
 CSV_FILE, TABLE_FILE, FIGURE_FILE, ROLLER_FILE = ("skidding_map.csv", "skidding_map.md", "skidding_map.png",
                                                   "roller_slip.png")
-COLUMNS = ("speed_rpm", "temperature", "radial_load", "total_load", "cage_slip", "max_inner_slide_to_roll",
-           "max_outer_slide_to_roll_unloaded", "friction_torque", "power_loss", "land_torque", "wall_time_s",
-           "status")
+COLUMNS = ("speed_rpm", "temperature", "radial_load", "total_load", "cage_slip", "max_roller_slip_loaded",
+           "max_roller_slip_unloaded", "max_inner_slide_to_roll", "friction_torque", "power_loss", "land_torque",
+           "wall_time_s", "status")
 
 
 def check_grid(base: Spec, loads, temperatures, speeds) -> None:
@@ -74,18 +74,23 @@ def point(base: Spec, speed: float, temperature: float, load: float) -> tuple[di
     except (ArithmeticError, SpecError) as error:
         log.warning("no skidding balance at %g rpm, %g °C, %g N: %s", speed, temperature, load, error)
         nan = float("nan")
-        row.update(cage_slip=nan, max_inner_slide_to_roll=nan, max_outer_slide_to_roll_unloaded=nan,
-                   friction_torque=nan, power_loss=nan, land_torque=nan, status=f"failed: {error}")
+        row.update(cage_slip=nan, max_roller_slip_loaded=nan, max_roller_slip_unloaded=nan,
+                   max_inner_slide_to_roll=nan, friction_torque=nan, power_loss=nan, land_torque=nan,
+                   status=f"failed: {error}")
         row["wall_time_s"] = time.perf_counter() - start
         return row, None
     loaded = solution.inner_loads > 0
-    inner = np.abs(solution.inner_sliding / solution.inner_rolling)[loaded]
-    outer = np.abs(solution.outer_sliding / solution.outer_rolling)[~loaded]
-    row.update(cage_slip=solution.cage_slip, max_inner_slide_to_roll=float(inner.max()) if inner.size else 0.0,
-               max_outer_slide_to_roll_unloaded=float(outer.max()) if outer.size else 0.0,
+    slide_to_roll = np.abs(solution.inner_sliding / solution.inner_rolling)[loaded]
+    row.update(cage_slip=solution.cage_slip, max_roller_slip_loaded=_largest(solution.roller_slip[loaded]),
+               max_roller_slip_unloaded=_largest(solution.roller_slip[~loaded]),
+               max_inner_slide_to_roll=_largest(slide_to_roll),
                friction_torque=-solution.ring_torque, power_loss=solution.power_loss,
                land_torque=solution.land_torque, wall_time_s=time.perf_counter() - start, status="success")
     return row, solution
+
+
+def _largest(values: np.ndarray) -> float:
+    return float(values.max()) if values.size else 0.0
 
 
 def run(base: Spec, directory: str | Path, loads, temperatures, speeds, minimum_load=None, figures: bool = True,
@@ -119,12 +124,16 @@ def run(base: Spec, directory: str | Path, loads, temperatures, speeds, minimum_
 
 
 def markdown_table(rows: list[dict]) -> str:
-    """Cage slip [%] by load (rows) and speed × temperature (columns), then the friction torque [N m]."""
+    """Cage slip [%] by load (rows) and speed × temperature (columns), then the largest roller slips [%] and the
+    friction torque [N m]."""
     keys = sorted({(row["speed_rpm"], row["temperature"]) for row in rows})
     loads = sorted({row["radial_load"] for row in rows}, reverse=True)
     value = {(row["speed_rpm"], row["temperature"], row["radial_load"]): row for row in rows}
     lines = []
-    tables = (("cage slip [%]", "cage_slip", 100.0), ("friction torque [N m]", "friction_torque", 1.0))
+    tables = (("cage slip [%]", "cage_slip", 100.0),
+              ("largest roller slip in the load zone [%]", "max_roller_slip_loaded", 100.0),
+              ("largest roller slip out of the load zone [%]", "max_roller_slip_unloaded", 100.0),
+              ("friction torque [N m]", "friction_torque", 1.0))
     for title, field, scale in tables:
         lines += [f"{title}:", "", "| radial load [N] | " + " | ".join(f"{s:g} rpm, {t:g} °C" for s, t in keys) + " |",
                   "|---:|" + "---:|" * len(keys)]
@@ -159,18 +168,15 @@ def plot_map(rows: list[dict], path: Path, minimum_load, title: str = "") -> Pat
 
 
 def plot_roller_slip(profiles: dict[float, SkiddingSolution], path: Path, title: str = "") -> Path:
-    figure, (inner, outer) = new_figure(2, 1, figsize=(6.5, 6.0), sharex=True)
+    figure, axis = new_figure(figsize=(6.5, 4.0))
     for n, (load, solution) in enumerate(sorted(profiles.items(), reverse=True)):
         degrees = np.degrees(solution.roller_angles)
-        inner.plot(degrees, solution.inner_sliding / solution.inner_rolling, color=f"C{n}", label=f"{load:g} N")
-        outer.plot(degrees, solution.outer_sliding / solution.outer_rolling, color=f"C{n}")
+        axis.plot(degrees, 100 * solution.roller_slip, color=f"C{n}", label=f"{load:g} N")
         loaded = np.where(solution.inner_loads > 0, 1.0, np.nan)
-        inner.plot(degrees, loaded * solution.inner_sliding / solution.inner_rolling, color=f"C{n}", linewidth=3)
-    inner.set_ylabel("inner raceway\nslide-to-roll [-]")
-    outer.set_ylabel("outer raceway\nslide-to-roll [-]")
-    outer.set_xlabel("roller azimuth [deg] (thick: in the load zone)")
-    inner.legend(fontsize="small", title="radial load")
-    for axis in (inner, outer):
-        axis.grid(True, alpha=0.3)
-    inner.set_title(title)
+        axis.plot(degrees, 100 * loaded * solution.roller_slip, color=f"C{n}", linewidth=3)
+    axis.set_ylabel("roller slip 1 − ω/ω_epi [%]")
+    axis.set_xlabel("roller azimuth [deg] (thick: in the load zone)")
+    axis.legend(fontsize="small", title="radial load")
+    axis.grid(True, alpha=0.3)
+    axis.set_title(title)
     return save_figure(figure, path, dpi=100)

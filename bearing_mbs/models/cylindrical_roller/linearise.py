@@ -30,7 +30,10 @@ Per raceway contact of normal load :math:`Q`, exponent :math:`n`, stiffness :mat
 
 * friction: a viscous coefficient :math:`c_t = \mu Q \varphi'(0)` [N s/m], :math:`\varphi'(0) v_{reg}` from
   :data:`bearing_mbs.contact.friction.ZERO_SLIP_SLOPE`; rolling resistance adds :math:`c_R = \mu_R Q \varphi'(0) r`
-  [N m s] on the roller's spin;
+  [N m s] on the roller's spin. The hydrodynamic rolling resistance of an ``ehl`` raceway is left out: its force
+  varies with the rolling speed as :math:`F_R \propto u^{0.658}`, a damping of about 1 N s/m for the seed
+  bearing (0.66 F_R/u; below 40 N s/m inside the regularisation, :math:`|u| < v_{reg}`), far below the
+  :math:`10^4`–:math:`10^7` N s/m of the loaded rollers' traction, which sets the step;
 * normal: the tangent stiffness :math:`k = dQ/d\delta` and the hysteresis damping at the approach-speed floor,
   :math:`c_n = d\,Q/v_{floor}`.
 

@@ -66,7 +66,8 @@ BRACKET_FRACTIONS = (0.98, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03, 0.01)
 
 @dataclass(frozen=True)
 class SkiddingSolution:
-    """The steady state: cage_speed ω_c and the epicyclic (slip-free) cage speed [rad/s]; at Z × phases roller
+    """The steady state: cage_speed ω_c and the epicyclic (slip-free) cage speed [rad/s], and the epicyclic roller
+    spin −(ω_i − ω_c,epi) r_i/r [rad/s] (rolling without slip on both raceways); at Z × phases roller
     azimuths around the orbit, sorted: roller_angles ψ [rad], inner_loads, outer_loads Q [N], roller_speeds ω_j
     [rad/s], pocket_forces P [N] (on the roller, along the orbit), inner_traction, outer_traction F [N] (on the
     roller, along the orbit), inner_sliding, outer_sliding Δu [m/s], inner_rolling, outer_rolling u [m/s];
@@ -76,6 +77,7 @@ class SkiddingSolution:
 
     cage_speed: float
     epicyclic_cage_speed: float
+    epicyclic_roller_speed: float
     roller_angles: np.ndarray
     inner_loads: np.ndarray
     outer_loads: np.ndarray
@@ -95,6 +97,12 @@ class SkiddingSolution:
     def cage_slip(self) -> float:
         """1 − ω_c/ω_c,epicyclic [-], the quantity ``summarize`` reports as cage slip."""
         return 1.0 - self.cage_speed / self.epicyclic_cage_speed
+
+    @property
+    def roller_slip(self) -> np.ndarray:
+        """1 − ω_j/ω_j,epicyclic [-] at each azimuth: the roller's speed deficit, as roller-speed sensors measure it
+        (0 rolling at the epicyclic speed, 1 stopped)."""
+        return 1.0 - self.roller_speeds / self.epicyclic_roller_speed
 
 
 #: Rows of the packed raceway and land laws (:func:`bearing_mbs.elements.contact_pairs.pack`).
@@ -139,7 +147,8 @@ def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
                               f"{1 - BRACKET_FRACTIONS[-1]:.0%} (the drags exceed what the traction carries) or is not "
                               "driven at all")
     cage_speed = brentq(torque, low, high, xtol=1e-10 * epicyclic, rtol=1e-12)
-    return SkiddingSolution(cage_speed, epicyclic, **_state(bearing, cage_speed, phases)[1])
+    roller = -(layout.shaft_speed - epicyclic) * layout.inner_radius / layout.roller_radius
+    return SkiddingSolution(cage_speed, epicyclic, roller, **_state(bearing, cage_speed, phases)[1])
 
 
 def _read(scene: Scene) -> _Bearing:
