@@ -24,9 +24,13 @@ from bearing_mbs.analysis import energy_balance_error
 from bearing_mbs.core.scene import Body, Scene
 from bearing_mbs.elements import Drag
 from bearing_mbs.engines import simulate
-from bearing_mbs.models.cylindrical_roller.lubrication import (cylinder_drag_coefficient, mixture_density,
-                                                               no_load_torque, orbital_drag_coefficient,
-                                                               spin_drag_coefficient)
+from bearing_mbs.models.cylindrical_roller.lubrication import (
+    cylinder_drag_coefficient,
+    mixture_density,
+    no_load_torque,
+    orbital_drag_coefficient,
+    spin_drag_coefficient,
+)
 from bearing_mbs.spec import ExudynSolver, ReferenceSolver, SolverSpec
 
 MASS, INERTIA, V0, OMEGA0 = 0.2, 1e-5, 8.0, 700.0  # kg, kg m², m/s, rad/s (a seed roller's orbit and spin)
@@ -110,6 +114,7 @@ def test_the_lubricated_seed_bearings_no_load_torque_is_of_palmgrens_order(tempe
     from bearing_mbs.contact.lubricant import PRESETS
     from bearing_mbs.elements.journal_bearings import JournalFilm
     from bearing_mbs.models import build_scene, load_spec
+
     from cases import SCENARIOS
 
     spec = load_spec(SCENARIOS / "seed_hss_lubricated.toml", [f"lubricant.temperature={temperature}"])

@@ -42,8 +42,8 @@ def both_engines():
 
 
 def test_engines_agree_on_the_lubricated_cage_slip(both_engines):
-    """6.8 kN, 60 C, with the hydrodynamic rolling resistance: the rolling set skids by a few percent; Exudyn and the reference engine agree on that slip within
-    2 % relative and on the roller load within 2 %."""
+    """6.8 kN, 60 C, with the hydrodynamic rolling resistance: the rolling set skids by a few percent; Exudyn and
+    the reference engine agree on that slip within 2 % relative and on the roller load within 2 %."""
     reference, exudyn = both_engines["reference"][2], both_engines["exudyn"][2]
     assert reference["cage_slip"] > 0.005  # a skidding state, so the comparison means something
     assert exudyn["cage_slip"] == pytest.approx(reference["cage_slip"], rel=0.02)
@@ -95,8 +95,9 @@ def test_the_energy_audit_closes_with_churning_drag_and_the_land_film():
 def test_the_penalty_cages_lag_grows_with_its_pocket_play():
     """At the nominal load the penalty cage reads more slip than the constraint cage because its rollers lag
     within their pocket play outside the load zone (docs/skidding.md): the lag is bounded by 2H/(R θ_L), so it
-    must grow with the pocket clearance H. Measured 0.35 % at H = 0.5 mm and 0.92 % at 2 mm (the bound: 0.27 and
-    1.09 %); required: at least twice, where a skidding of the loaded rollers would not depend on H. 0.2 s each."""
+    must grow with the pocket clearance H. Measured over 0.05-0.3 s 0.42 % at H = 0.5 mm and 1.27 % at 2 mm (the
+    bound: 0.27 and 1.09 %); required: at least twice, where a skidding of the loaded rollers would not depend on
+    H. 0.2 s each."""
     def slip(play):
         spec = load_spec(SCENARIOS / "seed_hss_lubricated.toml",
                          ["cage.model=penalty", f"bearing.pocket_clearance={play}", "scenario.end_time=0.2",

@@ -39,8 +39,12 @@ def test_without_resistance_the_cage_turns_at_the_epicyclic_speed():
                    "contact.outer_race.rolling_resistance_arm=0", "contact.land.friction_coefficient=0")
     solution = solve_skidding(build_scene(spec))
     # the seed-hss preset: D_w = 0.025 m, D_pw = 0.235 m; 1500 rpm
-    assert solution.cage_speed == pytest.approx(1500 * np.pi / 30 * (1 - 0.025 / 0.235) / 2, rel=1e-9)
+    shaft, cage = 1500 * np.pi / 30, 1500 * np.pi / 30 * (1 - 0.025 / 0.235) / 2
+    assert solution.cage_speed == pytest.approx(cage, rel=1e-9)
     assert abs(solution.cage_slip) < 1e-9
+    # and every roller spins in the cage at -(ω_i − ω_c) r_i/r, r_i = 0.105 m, r = 0.0125 m: no roller slip
+    assert solution.epicyclic_roller_spin == pytest.approx(-(shaft - cage) * 0.105 / 0.0125, rel=1e-12)
+    assert np.abs(solution.roller_slip).max() < 1e-6
 
 
 def test_a_weightless_cage_on_its_land_film_feels_petroffs_torque():
@@ -54,7 +58,8 @@ def test_a_weightless_cage_on_its_land_film_feels_petroffs_torque():
     assert solution.land_torque == pytest.approx(-petroff, rel=1e-9)
 
 
-ROLLING_RESISTANCE = ["contact.inner_race.ehl_rolling_resistance=true", "contact.outer_race.ehl_rolling_resistance=true"]
+ROLLING_RESISTANCE = ["contact.inner_race.ehl_rolling_resistance=true",
+                      "contact.outer_race.ehl_rolling_resistance=true"]
 
 
 @pytest.mark.parametrize("drag", ["palmgren", "churning", "churning, EHL rolling resistance"])

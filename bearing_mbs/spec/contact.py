@@ -39,8 +39,9 @@ class ContactSpec:
     raceways and rollers). eyring_stress τ0 [Pa] in [1e5, 1e8] (default 5e6), shear_modulus G [Pa] in [1e6, 1e10]
     (default 1e8), limiting_shear_coefficient Λ_L in [0.01, 0.2] (default 0.07): the ``eyring`` model.
     traction_curve: (A, B, C, D) of the ``curve`` model, with B > 0, C > 0 and |A + D| <= 1e-3 (no jump at zero
-    slip); required by it. ehl_rolling_resistance: the contact's hydrodynamic rolling resistance (Zhou–Hoeprich,
-    :func:`bearing_mbs.contact.ehl.rolling_force`), added to the dry arm's (default false; ``ehl`` only).
+    slip); required by it. ehl_rolling_resistance: the contact's hydrodynamic rolling resistance (Zhou–Hoeprich's,
+    Martin's rigid one at light load: :func:`bearing_mbs.contact.ehl.rolling_force`), added to the dry arm's
+    (default false; ``ehl`` only).
     """
 
     normal_law: str = "lankarani_nikravesh"

@@ -9,8 +9,9 @@ shaft speed given, a few seconds each where a dynamic run at light load needs se
 * ``skidding_map.csv`` and ``skidding_map.md``: a row per point (:data:`COLUMNS`);
 * ``skidding_map.png``: cage slip against the total radial load, a panel per speed and a curve per temperature,
   with the catalogue minimum-load band when one is given;
-* ``roller_slip.png``: the roller slip 1 − ω_j/ω_j,epi (the speed deficit roller-speed sensors measure) around the
-  orbit, in and out of the load zone, at each load (base speed and temperature).
+* ``roller_slip.png``: the roller slip, the deficit of a roller's spin in the cage against the epicyclic one (what a
+  roller-speed sensor on the cage measures), around the orbit, in and out of the load zone, at each load (base
+  speed and temperature).
 
 The rows also give the largest roller slip in and out of the load zone and the largest slide-to-roll ratio Δu/u
 (sliding over rolling speed) of the loaded inner contacts.
@@ -174,7 +175,7 @@ def plot_roller_slip(profiles: dict[float, SkiddingSolution], path: Path, title:
         axis.plot(degrees, 100 * solution.roller_slip, color=f"C{n}", label=f"{load:g} N")
         loaded = np.where(solution.inner_loads > 0, 1.0, np.nan)
         axis.plot(degrees, 100 * loaded * solution.roller_slip, color=f"C{n}", linewidth=3)
-    axis.set_ylabel("roller slip 1 − ω/ω_epi [%]")
+    axis.set_ylabel("roller slip: spin deficit in the cage [%]")
     axis.set_xlabel("roller azimuth [deg] (thick: in the load zone)")
     axis.legend(fontsize="small", title="radial load")
     axis.grid(True, alpha=0.3)

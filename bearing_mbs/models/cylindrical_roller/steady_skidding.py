@@ -67,17 +67,18 @@ BRACKET_FRACTIONS = (0.98, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03, 0.01)
 @dataclass(frozen=True)
 class SkiddingSolution:
     """The steady state: cage_speed ω_c and the epicyclic (slip-free) cage speed [rad/s], and the epicyclic roller
-    spin −(ω_i − ω_c,epi) r_i/r [rad/s] (rolling without slip on both raceways); at Z × phases roller
+    spin in the cage −(ω_i − ω_c,epi) r_i/r [rad/s] (rolling without slip on both raceways); at Z × phases roller
     azimuths around the orbit, sorted: roller_angles ψ [rad], inner_loads, outer_loads Q [N], roller_speeds ω_j
     [rad/s], pocket_forces P [N] (on the roller, along the orbit), inner_traction, outer_traction F [N] (on the
-    roller, along the orbit), inner_sliding, outer_sliding Δu [m/s], inner_rolling, outer_rolling u [m/s];
-    land_torque: the land's mean friction torque on the cage [N m]; ring_torque: the rollers' mean torque on the
-    inner ring [N m] (the drive supplies −ring_torque: the bearing's friction torque); power_loss: the mean power
-    dissipated at the contacts, by the drags and at the land [W]."""
+    roller, along the orbit, with the hydrodynamic rolling resistance's tangential force), inner_sliding,
+    outer_sliding Δu [m/s], inner_rolling, outer_rolling u [m/s]; land_torque: the land's mean friction torque on
+    the cage [N m]; ring_torque: the rollers' mean torque on the inner ring [N m] (the drive supplies −ring_torque:
+    the bearing's friction torque); power_loss: the mean power dissipated at the contacts, by the drags and at the
+    land [W]."""
 
     cage_speed: float
     epicyclic_cage_speed: float
-    epicyclic_roller_speed: float
+    epicyclic_roller_spin: float
     roller_angles: np.ndarray
     inner_loads: np.ndarray
     outer_loads: np.ndarray
@@ -100,9 +101,10 @@ class SkiddingSolution:
 
     @property
     def roller_slip(self) -> np.ndarray:
-        """1 − ω_j/ω_j,epicyclic [-] at each azimuth: the roller's speed deficit, as roller-speed sensors measure it
-        (0 rolling at the epicyclic speed, 1 stopped)."""
-        return 1.0 - self.roller_speeds / self.epicyclic_roller_speed
+        """1 − (ω_j − ω_c)/(the epicyclic spin in the cage) [-] at each azimuth: the deficit of the roller's spin in
+        the cage, as a roller-speed sensor on the cage measures it (0 rolling at the epicyclic speeds, 1 not
+        turning in its pocket)."""
+        return 1.0 - (self.roller_speeds - self.cage_speed) / self.epicyclic_roller_spin
 
 
 #: Rows of the packed raceway and land laws (:func:`bearing_mbs.elements.contact_pairs.pack`).
