@@ -77,7 +77,7 @@ def random_scene(rng, n_bodies=4, n_pairs=40):
         )
     loads = (Load("f", 0, (1.0, -2.0, 0.3), Profile((0.0, 1.0), (0.0, 2.0))),)
     drives = (VelocityServo("servo", 1, 5.0, Profile((0.0, 0.5), (0.0, 100.0))),)
-    drags = (Drag("drag", 2, 0.3, 1e-3, 0.05),)
+    drags = (Drag("drag", 2, 0.3, 1e-3, 0.05, 1e-5),)
     return Scene("random", bodies, tuple(pairs), forces=(*loads, *drives, *drags))
 
 

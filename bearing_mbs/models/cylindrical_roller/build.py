@@ -46,6 +46,7 @@ from bearing_mbs.models.cylindrical_roller.drivetrain import (
 )
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.lubrication import (
+    cage_drag_coefficient,
     mixture_density,
     orbital_drag_coefficient,
     palmgren_drag_moment,
@@ -141,6 +142,8 @@ def build_bearing_scene(spec: Spec) -> Scene:
     coefficients = roller_drag(spec, geometry)
     drags = tuple(Drag(f"roller{k}-drag", first_roller + k, **coefficients) for k in range(geometry.rollers)
                   if coefficients)
+    if caged and spec.lubricant.model == "churning":
+        drags += (Drag("cage-drag", CAGE, angular_quadratic=cage_drag(spec, geometry)),)
     films = (land_film(spec, geometry),) if spec.lubricant.land_film else ()
     roles = {"inner_ring": [INNER_RING], "rollers": list(range(first_roller, first_roller + geometry.rollers))}
     if caged:
@@ -177,6 +180,14 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
                                       geometry.pitch_diameter)
     linear = roller_drag_coefficient(moment, inner_speed, geometry.rollers, geometry.pitch_diameter, cage_speed)
     return {"linear": linear} if linear > 0 else {}
+
+
+def cage_drag(spec: Spec, geometry: BearingGeometry) -> float:
+    """c_θ2 [N m s²/rad²] of the churning drag on the cage's bars (:func:`.lubrication.cage_drag_coefficient`)."""
+    lubricant = spec.lubricant
+    density = mixture_density(lubricant.oil_fraction, lubricant.lubricant().density(lubricant.temperature))
+    return cage_drag_coefficient(density, geometry.rollers, spec.bearing.cage_thickness, geometry.roller_length,
+                                 geometry.cage_diameter / 2)
 
 
 def land_film(spec: Spec, geometry: BearingGeometry) -> JournalFilm:

@@ -34,6 +34,13 @@ orbital speed. Its spin meets the laminar shear of a cylinder turning in an unbo
 :math:`4\pi\eta_e R_w^2 L_w\,\omega`. The orbital drag grows with the square of the speed, Palmgren's
 :math:`M_0` only as :math:`n^{2/3}`: this is what makes a faster bearing skid more. :math:`M_0` is then only a
 cross-check of the total no-load torque (:func:`no_load_torque`).
+
+The cage's Z bars, between the pockets, move through the same mixture at the cage circle's speed :math:`\omega R_c`:
+each meets the form drag :math:`\tfrac12\rho_e C_D t L_w (\omega R_c)^2` on its frontal area (the cage's
+radial thickness t times the pocket length), a torque :math:`-c_{\theta 2}|\omega|\omega` on the cage with
+:math:`c_{\theta 2} = Z\,\tfrac12\rho_e C_D t L_w R_c^3` (:func:`cage_drag_coefficient`). :math:`C_D = 2`, a
+bar of square section broadside to the flow (S. F. Hoerner, Fluid-Dynamic Drag, 1965, ch. 3), is our choice: the
+bars' sections are longer than square and sit in the rollers' wakes, which both lower it, so it errs high.
 """
 
 from __future__ import annotations
@@ -42,6 +49,8 @@ import math
 
 #: Density of air [kg/m³] at 20 °C and 1 atm.
 AIR_DENSITY = 1.2
+#: Drag coefficient of a cage bar: a bluff bar of square section broadside to the flow (Hoerner 1965).
+BAR_DRAG_COEFFICIENT = 2.0
 
 
 def palmgren_drag_moment(drag_factor: float, viscosity: float, speed_rpm: float, pitch_diameter: float) -> float:
@@ -86,6 +95,12 @@ def spin_drag_coefficient(dynamic_viscosity: float, roller_radius: float, roller
     """c_θ [N m s/rad] of the laminar torque 4π η R² L ω on a roller spinning in a fluid of dynamic viscosity
     [Pa s]."""
     return 4 * math.pi * dynamic_viscosity * roller_radius**2 * roller_length
+
+
+def cage_drag_coefficient(density: float, bars: int, thickness: float, length: float, radius: float) -> float:
+    """c_θ2 [N m s²/rad²] of the form drag −c_θ2 |ω| ω on a cage of Z bars, each of radial thickness and length
+    [m], on the cage circle of radius [m], in a mixture of density [kg/m³]."""
+    return bars * 0.5 * density * BAR_DRAG_COEFFICIENT * thickness * length * radius**3
 
 
 def no_load_torque(rollers: int, pitch_diameter: float, roller_radius: float, inner_radius: float,

@@ -19,13 +19,15 @@ the orbit :math:`\omega_c` (:func:`.quasistatic.solve_radial`). Along the orbit'
 * tractions on the roller :math:`F = -\mu(\Delta u, u, Q)\,Q` (the pair's law), rolling-resistance moments
   :math:`-a\,Q\,\varphi(\omega_{rel} r)` and, with ``ehl_rolling_resistance``, the hydrodynamic rolling
   resistance's tangential force and couple (:func:`bearing_mbs.contact.traction.rolling_resistance`), drag
-  :math:`-(c + c_2 v) v` on the centre at :math:`v = \omega_c R` and :math:`-c_\theta \omega_j` on the spin.
+  :math:`-(c + c_2 v) v` on the centre at :math:`v = \omega_c R` and :math:`-(c_\theta + c_{\theta 2}|\omega_j|)
+  \omega_j` on the spin.
 
-Each roller's spin follows :math:`I\dot\omega_j = -r F_i + r F_o + M_{R,i} + M_{R,o} - c_\theta\omega_j` around
+Each roller's spin follows :math:`I\dot\omega_j = -r F_i + r F_o + M_{R,i} + M_{R,o} - (c_\theta +
+c_{\theta 2}|\omega_j|)\omega_j` around
 its orbit (:math:`\psi = \omega_c t`, periodic): held at its balance in the load zone, coasting outside it. Its
 tangential balance gives the pocket force on it, :math:`P_j = (c + c_2 v) v - F_i - F_o`. The cage's torque
 balance, averaged over the orbit (the cage's inertia filters the pitch's ripple), fixes :math:`\omega_c`:
-:math:`\langle -R\sum_j P_j\rangle + T_l = 0`: the land's torque
+:math:`\langle -R\sum_j P_j\rangle + T_l + T_d = 0`, :math:`T_d` the cage's own drag; the land's torque
 :math:`T_l = -\mu_l N r_c\,\varphi(\omega_c r_c)` dry, or
 the Couette torque of its oil film (a short journal bearing, :mod:`bearing_mbs.fluid_film`) at the eccentricity
 where the film carries N. N is the land's normal force,
@@ -117,7 +119,9 @@ class _Bearing:
 
     layout: BearingLayout
     load: np.ndarray
-    drag: tuple[float, float, float]  # linear [N s/m], quadratic [N s²/m²], angular [N m s/rad]
+    drag: tuple[float, float, float, float]  # on a roller: linear [N s/m], quadratic [N s²/m²], angular
+    # [N m s/rad], angular quadratic [N m s²/rad²]
+    cage_drag: tuple[float, float]  # on the cage: angular [N m s/rad], angular quadratic [N m s²/rad²]
     cage_mass: float
     cage_radius: float
     laws: PairArrays  # the inner and outer raceway pairs' laws, then the land's if the cage has one
@@ -165,14 +169,18 @@ def _read(scene: Scene) -> _Bearing:
     _, applied = layout.applied_load()
     if np.ptp(applied, axis=0).max() > 0:
         raise SpecError("load.profile", "varies in time", "a constant load for a steady state")
-    drags = [d for d in scene.items_of(Drag) if d.body == layout.rollers[0]]
     cage_index = int(scene.topology.bodies["cage"][0])
+
+    def drag_sum(body, *names):
+        return tuple(sum(getattr(d, name) for d in scene.items_of(Drag) if d.body == body) for name in names)
+
     cage = scene.bodies[cage_index]
     land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
     raceways = [scene.pairs[int(pairs[group][0])] for group in ("inner_race", "outer_race")]
     return _Bearing(layout, applied[-1],
-                    (sum(d.linear for d in drags), sum(d.quadratic for d in drags), sum(d.angular for d in drags)),
-                    cage.mass, land.radius_b if land is not None else 0.0,
+                    drag_sum(layout.rollers[0], "linear", "quadratic", "angular", "angular_quadratic"),
+                    drag_sum(cage_index, "angular", "angular_quadratic"), cage.mass,
+                    land.radius_b if land is not None else 0.0,
                     pack(raceways + ([land] if land is not None else [])),
                     np.asarray(scene.gravity, float),
                     not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
@@ -222,7 +230,8 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     layout = bearing.layout
     r, orbit, omega_i = layout.roller_radius, cage_speed * layout.pitch_diameter / 2, layout.shaft_speed
     r_i, r_o = layout.inner_radius, layout.outer_radius
-    linear, quadratic, angular = bearing.drag
+    linear, quadratic, angular, angular_quadratic = bearing.drag
+    spin_drag = (angular + angular_quadratic * abs(spin)) * spin
     du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
     u_i = 0.5 * ((omega_i - cage_speed) * r_i + (cage_speed - spin) * r)
     u_o = 0.5 * (cage_speed * r_o + (cage_speed - spin) * r)
@@ -234,8 +243,8 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     m_i = _rolling_resistance(bearing.laws, _INNER, q_i, spin - omega_i, r) + c_i
     m_o = _rolling_resistance(bearing.laws, _OUTER, q_o, spin, r) + c_o
     drag = (linear + quadratic * abs(orbit)) * orbit
-    loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + angular * spin**2
-    return _RollerForces(-r * f_i + r * f_o + m_i + m_o - angular * spin, f_i, f_o, du_i, du_o, u_i, u_o,
+    loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + spin_drag * spin
+    return _RollerForces(-r * f_i + r * f_o + m_i + m_o - spin_drag, f_i, f_o, du_i, du_o, u_i, u_o,
                          drag - f_i - f_o, -r_i * f_i - m_i, loss)
 
 
@@ -343,13 +352,15 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
         sign = kernel.regularised_sign(laws.friction_law[_LAND], cage_speed * bearing.cage_radius,
                                        laws.regularisation_speed[_LAND])
         land = -laws.friction_coefficient[_LAND] * float(np.mean(normal)) * bearing.cage_radius * sign
-    torque = -radius * rollers * means["pocket_force"] + land
+    angular, angular_quadratic = bearing.cage_drag
+    churning = -(angular + angular_quadratic * abs(cage_speed)) * cage_speed
+    torque = -radius * rollers * means["pocket_force"] + land + churning
     state = {"roller_angles": psi, "inner_loads": q_i, "outer_loads": q_o, "roller_speeds": spins,
              "pocket_forces": pocket, "inner_traction": rows.inner_traction, "outer_traction": rows.outer_traction,
              "inner_sliding": rows.inner_sliding, "outer_sliding": rows.outer_sliding,
              "inner_rolling": rows.inner_rolling, "outer_rolling": rows.outer_rolling, "land_torque": land,
              "ring_torque": rollers * means["ring_torque"],
-             "power_loss": rollers * means["power_loss"] - land * cage_speed}
+             "power_loss": rollers * means["power_loss"] - (land + churning) * cage_speed}
     return torque, state
 
 
