@@ -137,7 +137,7 @@ def test_the_lubricated_seed_bearings_no_load_torque_is_of_palmgrens_order(tempe
     resistance of the outer contacts, which the rollers' centrifugal force m ω_c² R loads (at the outer ring's
     rolling speed ω_c r_o, power F_R u; at 123 N the rigid-isoviscous regime's). With f_0 = 2 they must come to
     0.8-2.5 × M_0, an f_0 of 1.6-5 (Palmgren's f_0 of a caged cylindrical roller bearing is a few, more with more
-    oil): without the rolling resistance they are 0.53-0.61 ×, with it doubled up to 2.7 ×. Measured 1.0-1.65:
+    oil): without the rolling resistance they are 0.6-0.75 ×, with it doubled up to 2.8 ×. Measured 1.04-1.78:
     the fully flooded rolling resistance is the upper bound of a real, starved contact's (docs/skidding.md)."""
     from bearing_mbs.contact import traction
     from bearing_mbs.contact.lubricant import PRESETS

@@ -361,10 +361,11 @@ class LubricantSpec:
       with cage, oil-lubricated; larger for an oil bath or more oil). reference_rpm: the speed at which the drag
       equals Palmgren's M_0 (default: the drive's highest speed). drag_moment [N m] >= 0: M_0 itself, replacing
       the formula.
-    * ``churning``: each roller's orbital form drag (∝ v²) and spin drag in the oil–air mixture; needs the oil and
-      its temperature. oil_fraction in (0, 1]: the oil's volume fraction in the bearing cavity (default 0.05, our
-      choice: no measurement of the seed bearing's cavity is at hand, so sweep it). reference_rpm: the speed at
-      which the drag coefficient's Reynolds number is taken (default: the drive's highest speed).
+    * ``churning``: each roller's orbital form drag (∝ v²) and spin drag, and the cage bars' form drag (∝ ω²), in
+      the oil–air mixture; needs the oil and its temperature. oil_fraction in (0, 1]: the oil's volume fraction
+      in the bearing cavity (default 0.05, our choice: no measurement of the seed bearing's cavity is at hand, so
+      sweep it). reference_rpm: the speed at which the drag coefficient's Reynolds number is taken (default: the
+      drive's highest speed).
 
     land_film (default false): the cage rides on an oil film on the outer ring's land, a short journal bearing
     (:mod:`bearing_mbs.fluid_film`) of the land clearance, as wide as the cage's side rings together
