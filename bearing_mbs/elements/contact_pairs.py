@@ -4,8 +4,10 @@ The compiled :func:`add_forces` loops over the pairs calling the pure functions 
 (kinematics, normal and friction laws; compiled inline there, plain Python elsewhere); :func:`add_forces_twin`
 does the same on whole arrays with numpy. The tests hold the two to 1e-12.
 
-Per pair it writes the columns of :data:`PAIR_OUTPUTS` into ``pair_out``; the power lost to damping, friction
-and rolling resistance goes to ``power[1]``. The elastic energy of the pairs is their potential energy.
+Per pair it writes the columns of :data:`PAIR_OUTPUTS` into ``pair_out`` (for a lubricated pair with its
+hydrodynamic rolling resistance, the friction force and rolling moment include that resistance's tangential force
+and couple, :mod:`bearing_mbs.contact.traction`); the power lost to damping, friction and rolling resistance goes
+to ``power[1]``. The elastic energy of the pairs is their potential energy.
 """
 
 from __future__ import annotations
