@@ -53,6 +53,27 @@ def tangential_force(law, normal_force, coefficient, slip, rolling, regularisati
 
 
 @numba.njit(cache=True, inline="always")
+def rolling_resistance(law, friction_force, normal_force, arm, spin, rolling, orientation, radius_a, radius_b, gap,
+                       regularisation_speed, traction_row):
+    """(tangential force [N], moment [N m]) on body b of a pair in contact: its ``friction_force`` plus what
+    resists its rolling, the dry arm's moment against the relative spin ω_b − ω_a [rad/s] and, for ``ehl`` with it
+    on, the hydrodynamic rolling resistance's tangential force and couple against the rolling speed u [m/s]
+    (:mod:`.traction`); orientation and gap [m] place b against a's feature
+    (:func:`.kinematics.contact_point_share`). Without the latter the friction force is returned as it came."""
+    moment = 0.0
+    if arm > 0.0:
+        spin_sign = regularised_sign(law, spin * radius_b, regularisation_speed)
+        moment = friction.rolling_resistance_moment(normal_force, arm, spin_sign)
+    if law == _EHL:
+        force = traction.rolling_force(traction_row, rolling, normal_force)
+        if force > 0.0:
+            share = kinematics.contact_point_share(orientation, radius_a, radius_b, gap)
+            tangential, couple = traction.rolling_resistance(force, rolling, regularisation_speed, share, radius_b)
+            return friction_force + tangential, moment + couple
+    return friction_force, moment
+
+
+@numba.njit(cache=True, inline="always")
 def body_trigonometry(q):
     """cos θ and sin θ of every body, computed once per evaluation rather than once per pair."""
     bodies = q.size // 3

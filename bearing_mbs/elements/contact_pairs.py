@@ -25,7 +25,7 @@ from bearing_mbs.contact.kernel import (
     body_trigonometry,
     pair_motion,
     pair_position,
-    regularised_sign,
+    rolling_resistance,
     tangential_force,
 )
 from bearing_mbs.contact.kinematics import ORIENTATION, PAIR_KINDS
@@ -115,17 +115,8 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
             fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
             law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
             ft = tangential_force(law, fn, pairs.friction_coefficient[k], slip, rolling, vreg, pairs.traction[k])
-            arm = pairs.rolling_resistance_arm[k]
-            if arm > 0.0:
-                spin_sign = regularised_sign(law, spin * pairs.radius_b[k], vreg)
-                moment = friction.rolling_resistance_moment(fn, arm, spin_sign)
-            if law == _EHL:  # the hydrodynamic rolling resistance, if it is on (a tangential force and a couple)
-                rolling_force = traction.rolling_force(pairs.traction[k], rolling, fn)
-                if rolling_force > 0.0:
-                    share = kinematics.contact_point_share(ORIENTATION[kind], ra, rb, gap)
-                    tangential, couple = traction.rolling_resistance(rolling_force, rolling, vreg, share, rb)
-                    ft += tangential
-                    moment += couple
+            ft, moment = rolling_resistance(law, ft, fn, pairs.rolling_resistance_arm[k], spin, rolling,
+                                            ORIENTATION[kind], ra, rb, gap, vreg, pairs.traction[k])
             loss = -(fn - elastic) * gap_rate - ft * slip - moment * spin
             fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
             forces[3 * b] += fx

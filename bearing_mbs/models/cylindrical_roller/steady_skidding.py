@@ -18,7 +18,7 @@ the orbit :math:`\omega_c` (:func:`.quasistatic.solve_radial`). Along the orbit'
   :math:`u_o = \tfrac12[\omega_c r_o + (\omega_c - \omega_j) r]`;
 * tractions on the roller :math:`F = -\mu(\Delta u, u, Q)\,Q` (the pair's law), rolling-resistance moments
   :math:`-a\,Q\,\varphi(\omega_{rel} r)` and, with ``ehl_rolling_resistance``, the hydrodynamic rolling
-  resistance's tangential force and couple (:func:`bearing_mbs.contact.traction.rolling_resistance`), drag
+  resistance's tangential force and couple (:func:`bearing_mbs.contact.kernel.rolling_resistance`), drag
   :math:`-(c + c_2 v) v` on the centre at :math:`v = \omega_c R` and :math:`-(c_\theta + c_{\theta 2}|\omega_j|)
   \omega_j` on the spin.
 
@@ -49,9 +49,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from bearing_mbs.contact import kernel, traction
-from bearing_mbs.contact.friction import FRICTION_LAWS, rolling_resistance_moment
-from bearing_mbs.contact.kinematics import contact_point_share
+from bearing_mbs.contact import kernel
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
 from bearing_mbs.elements.contact_pairs import PairArrays, pack
@@ -187,28 +185,17 @@ def _read(scene: Scene) -> _Bearing:
                     next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None))
 
 
-def _traction(laws: PairArrays, k: int, sliding, rolling, load):
-    """The tangential force [N] on the roller at contact k: the compiled kernel's, −μ Q along the slip."""
+def _contact(laws: PairArrays, k: int, load, sliding, relative_spin, rolling, orientation, raceway_radius, radius):
+    """(tangential force along the pair's tangent [N], moment [N m]) on the roller at contact k: the compiled
+    kernel's traction (−μ Q along the slip) and what resists the rolling (the dry arm's moment, the hydrodynamic
+    rolling resistance if it is on)."""
     if load <= 0.0:
-        return 0.0
-    return kernel.tangential_force(laws.friction_law[k], load, laws.friction_coefficient[k], sliding, rolling,
-                                   laws.regularisation_speed[k], laws.traction[k])
-
-
-def _rolling_resistance(laws: PairArrays, k: int, load, relative_spin, radius):
-    """The rolling-resistance moment [N m] on the roller at contact k (the kernel's regularised sign of the rim
-    speed)."""
-    spin_sign = kernel.regularised_sign(laws.friction_law[k], relative_spin * radius, laws.regularisation_speed[k])
-    return rolling_resistance_moment(load, laws.rolling_resistance_arm[k], spin_sign)
-
-
-def _hydrodynamic_rolling(laws: PairArrays, k: int, load, rolling, share, radius):
-    """(tangential force along the pair's tangent [N], couple [N m]) on the roller of the hydrodynamic rolling
-    resistance at contact k (0 unless it is on): the compiled kernel's."""
-    if laws.friction_law[k] != FRICTION_LAWS.index("ehl"):
         return 0.0, 0.0
-    force = traction.rolling_force(laws.traction[k], rolling, load)
-    return traction.rolling_resistance(force, rolling, laws.regularisation_speed[k], share, radius)
+    law, vreg = laws.friction_law[k], laws.regularisation_speed[k]
+    traction = kernel.tangential_force(law, load, laws.friction_coefficient[k], sliding, rolling, vreg,
+                                       laws.traction[k])
+    return kernel.rolling_resistance(law, traction, load, laws.rolling_resistance_arm[k], relative_spin, rolling,
+                                     orientation, raceway_radius, radius, 0.0, vreg, laws.traction[k])
 
 
 class _RollerForces(NamedTuple):
@@ -235,13 +222,11 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
     u_i = 0.5 * ((omega_i - cage_speed) * r_i + (cage_speed - spin) * r)
     u_o = 0.5 * (cage_speed * r_o + (cage_speed - spin) * r)
-    # the inner contact's tangent is e_θ, the outer's −e_θ; u_i, u_o are the rolling speeds along them
-    g_i, c_i = _hydrodynamic_rolling(bearing.laws, _INNER, q_i, u_i, contact_point_share(1.0, r_i, r, 0.0), r)
-    g_o, c_o = _hydrodynamic_rolling(bearing.laws, _OUTER, q_o, u_o, contact_point_share(-1.0, r_o, r, 0.0), r)
-    f_i = _traction(bearing.laws, _INNER, du_i, u_i, q_i) + g_i
-    f_o = _traction(bearing.laws, _OUTER, du_o, u_o, q_o) - g_o
-    m_i = _rolling_resistance(bearing.laws, _INNER, q_i, spin - omega_i, r) + c_i
-    m_o = _rolling_resistance(bearing.laws, _OUTER, q_o, spin, r) + c_o
+    # the inner contact's tangent is e_θ, the outer's −e_θ (the slips Δu are along e_θ, the rolling speeds u along
+    # the tangents); f_i, f_o are along e_θ
+    f_i, m_i = _contact(bearing.laws, _INNER, q_i, du_i, spin - omega_i, u_i, 1.0, r_i, r)
+    f_o_tangent, m_o = _contact(bearing.laws, _OUTER, q_o, -du_o, spin, u_o, -1.0, r_o, r)
+    f_o = -f_o_tangent
     drag = (linear + quadratic * abs(orbit)) * orbit
     loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + spin_drag * spin
     return _RollerForces(-r * f_i + r * f_o + m_i + m_o - spin_drag, f_i, f_o, du_i, du_o, u_i, u_o,
