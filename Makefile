@@ -30,10 +30,10 @@ static-check: $(STAMP)
 
 skidding: $(STAMP)
 	$(BIN)/bearing-mbs skidding scenarios/seed_hss_steady.toml --out out/skidding --overwrite \
-		--set scenario.end_time=0.3 --set analysis.start=0.1
+		--set scenario.variant=dry --set scenario.end_time=0.3 --set analysis.start=0.1
 
 skidding-map: $(STAMP)
-	$(BIN)/bearing-mbs skidding-map scenarios/seed_hss_lubricated.toml --out out/skidding_map --overwrite \
+	$(BIN)/bearing-mbs skidding-map scenarios/seed_hss_steady.toml --out out/skidding_map --overwrite \
 		--minimum-load 4000,9000
 
 cage-models: $(STAMP)

@@ -1,11 +1,12 @@
-"""One shaft revolution of the lubricated seed bearing (seed_hss_lubricated: EHL raceways, churning drag, cage on
-its land film, constraint cage, 1500 rpm, 68 kN) on each engine, and the quasi-static skidding balance.
+"""One shaft revolution of the lubricated seed bearing (seed_hss_steady, its default variant: EHL raceways, churning
+drag, cage on its land film, constraint cage, 1500 rpm, 68 kN) on each engine, and the quasi-static skidding
+balance.
 
 Figures:
 * wall time per revolution of Exudyn generalized-alpha (compiled connector, 1e-5 s) and of the reference engine's
   RK4 at the step the advisor gives for this scene (half its RK4 stability limit); Exudyn's explicit solvers
   reject the constraint cage's joints;
-* the advisor's RK4 stability limit, lubricated and dry (seed_hss_steady with the same cage), and their ratio;
+* the advisor's RK4 stability limit, lubricated and dry (the variant "dry" with the same cage), and their ratio;
 * the cost of a step of the reference engine's RK4, lubricated over dry, at one step (1e-7 s) over 2 ms: what
   the EHL traction and the films cost per force evaluation;
 * the wall time of the quasi-static skidding balance of the same scene.
@@ -30,13 +31,14 @@ GA_STEP = 1e-5
 COST_STEP, COST_TIME = 1e-7, 2e-3
 
 
-def scene_of(name: str, overrides: list[str]):
-    spec = load_spec(SCENARIOS / name, ["analysis.start=0", "solver.output_interval=1e-4", *overrides])
+def scene_of(variant: str, overrides: list[str]):
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [f"scenario.variant={variant}", "analysis.start=0",
+                                                          "solver.output_interval=1e-4", *overrides])
     return spec, build_scene(spec)
 
 
 def revolution(overrides: list[str]) -> dict:
-    spec, scene = scene_of("seed_hss_lubricated.toml", [f"scenario.end_time={REVOLUTION}", *overrides])
+    spec, scene = scene_of("lubricated", [f"scenario.end_time={REVOLUTION}", *overrides])
     simulate(scene, spec.solver, 1e-3)  # warm-up: compilation and caches
     result = simulate(scene, spec.solver, REVOLUTION)
     stats = result.stats
@@ -45,14 +47,14 @@ def revolution(overrides: list[str]) -> dict:
             "microseconds_per_step": stats.wall_time_s / stats.steps * 1e6}
 
 
-def rk4_limit(name: str) -> float:
-    _, scene = scene_of(name, ["cage.model=constraint"])
+def rk4_limit(variant: str) -> float:
+    _, scene = scene_of(variant, ["cage.model=constraint"])
     return advise(scene).limit_and_mode("reference", "rk4")[0]
 
 
-def step_cost(name: str) -> float:
+def step_cost(variant: str) -> float:
     """Microseconds per reference RK4 step at COST_STEP."""
-    spec, scene = scene_of(name, ["cage.model=constraint", f"scenario.end_time={COST_TIME}", "solver.engine=reference",
+    spec, scene = scene_of(variant, ["cage.model=constraint", f"scenario.end_time={COST_TIME}", "solver.engine=reference",
                                   "solver.reference.method=rk4", f"solver.reference.step={COST_STEP}"])
     simulate(scene, spec.solver, 1e-5)
     result = simulate(scene, spec.solver, COST_TIME)
@@ -60,7 +62,7 @@ def step_cost(name: str) -> float:
 
 
 def main() -> dict:
-    lubricated_limit, dry_limit = rk4_limit("seed_hss_lubricated.toml"), rk4_limit("seed_hss_steady.toml")
+    lubricated_limit, dry_limit = rk4_limit("lubricated"), rk4_limit("dry")
     explicit = f"{lubricated_limit / 2:.2g}"
     runs = {
         "exudyn_generalized_alpha_compiled": revolution(["solver.engine=exudyn",
@@ -69,13 +71,13 @@ def main() -> dict:
         "reference_rk4": revolution(["solver.engine=reference", "solver.reference.method=rk4",
                                      f"solver.reference.step={explicit}"]),
     }
-    cost = {"lubricated": step_cost("seed_hss_lubricated.toml"), "dry": step_cost("seed_hss_steady.toml")}
-    _, scene = scene_of("seed_hss_lubricated.toml", [])
+    cost = {"lubricated": step_cost("lubricated"), "dry": step_cost("dry")}
+    _, scene = scene_of("lubricated", [])
     start = time.perf_counter()
     slip = solve_skidding(scene).cage_slip
     balance = time.perf_counter() - start
     report = {
-        "case": "seed_hss_lubricated, constraint cage, one shaft revolution (0.04 s)",
+        "case": "seed_hss_steady (lubricated), constraint cage, one shaft revolution (0.04 s)",
         "ga_step_s": GA_STEP,
         "explicit_step_s": float(explicit),
         "runs": runs,

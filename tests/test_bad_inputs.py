@@ -14,13 +14,15 @@ import math
 import pytest
 
 from bearing_mbs.models import build_scene, load_spec
-from bearing_mbs.spec import SpecError
+from bearing_mbs.spec import SpecError, read_toml
 from bearing_mbs.studies.sensitivity import load_study
 
 from cases import SCENARIOS
 
 STEADY, DROP, PAIR = "seed_hss_steady.toml", "seed_case2.toml", "seed_case5.toml"
 STUDY = "study_drop_morris.toml"
+#: The rows on STEADY change the seed bearing's dry model (its variant "dry"; the file's default is lubricated).
+VARIANT = {STEADY: ["scenario.variant=dry"]}
 
 #: name -> (file, overrides, field). ``{tmp}`` files are written by :func:`_file`.
 SCENARIO_ROWS = {
@@ -128,6 +130,8 @@ SCENARIO_ROWS = {
                                    "contact.inner_race.traction_curve"),
     "curve model without its curve": (STEADY, ["contact.inner_race.friction_law='ehl'", "contact.inner_race.traction_model='curve'"],
                                       "contact.inner_race.traction_curve"),
+    "unknown variant": (STEADY, ["scenario.variant='wet'"], "scenario.variant"),
+    "variant of a file without variants": (DROP, ["scenario.variant=dry"], "scenario.variant"),
     "EHL rolling resistance on a dry law": (STEADY, ["contact.inner_race.ehl_rolling_resistance=true"],
                                             "contact.inner_race.ehl_rolling_resistance"),
 }
@@ -164,7 +168,7 @@ def test_at_least_forty_bad_inputs():
 def test_a_bad_scenario_is_refused_before_the_run(name, tmp_path):
     path, overrides, field = SCENARIO_ROWS[name]
     with pytest.raises(SpecError) as error:
-        build_scene(load_spec(_file(path, tmp_path), overrides))
+        build_scene(load_spec(_file(path, tmp_path), [*VARIANT.get(path, []), *overrides]))
     _refused(error.value, field)
 
 
@@ -188,6 +192,7 @@ def test_the_seed_scenarios_still_load():
     static_only = ("seed_slewing", "seed_hybrid_journal")  # their commands read them (their own tests)
     for path in sorted(p for p in SCENARIOS.glob("seed_*.toml") if not p.name.startswith(static_only)) + [
             SCENARIOS / "cage_models.toml", SCENARIOS / "static_check.toml"]:
-        spec = load_spec(path)
-        assert math.isfinite(spec.scenario.end_time)
-        build_scene(spec)
+        for variant in [None, *read_toml(path).get("variants", {})]:
+            spec = load_spec(path, [f"scenario.variant={variant}"] if variant else [])
+            assert math.isfinite(spec.scenario.end_time)
+            build_scene(spec)

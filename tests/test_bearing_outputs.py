@@ -45,8 +45,9 @@ from bearing_mbs.studies import cage_models, skidding
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 STEADY = SCENARIOS / "seed_hss_steady.toml"
-SHORT = ("solver.engine=exudyn", "solver.exudyn.method=generalized_alpha", "scenario.end_time=0.02",
-         "analysis.start=0.01")
+#: The document's dry model (the steady scenario's variant "dry").
+SHORT = ("scenario.variant=dry", "solver.engine=exudyn", "solver.exudyn.method=generalized_alpha",
+         "scenario.end_time=0.02", "analysis.start=0.01")
 FIGURE_NAMES = {"cage_slip.png", "roller_loads.png", "slip_map.png", "inner_ring_orbit.png"}
 
 
@@ -95,7 +96,8 @@ def test_animation_writes_the_requested_frames(short_run, tmp_path):
 
 def test_cli_animate_writes_a_gif(tmp_path):
     code = cli_main(["run", str(STEADY), "--out", str(tmp_path), "--quiet", "--no-figures", "--animate",
-                     "--set", "scenario.end_time=0.002", "--set", "analysis.start=0.001",
+                     "--set", "scenario.variant=dry", "--set", "scenario.end_time=0.002",
+                     "--set", "analysis.start=0.001",
                      "--set", "solver.output_interval=2e-4"])
     assert code == 0
     assert (tmp_path / "animation.gif").stat().st_size > 0
@@ -110,7 +112,8 @@ def test_cage_slip_grows_as_the_load_falls():
     of about 0.5 % that masks the trend above a few hundred newtons: docs/cage-models.md. At the nominal 68 kN
     the constraint cage's common orbital speed against the 22 µm displaced inner ring, δ/R ≈ 0.02 %, is larger
     than the drag's creep: docs/skidding.md.)"""
-    base = load_spec(STEADY, ["cage.model=constraint", "scenario.end_time=0.1", "analysis.start=0.05"])
+    base = load_spec(STEADY, ["scenario.variant=dry", "cage.model=constraint", "scenario.end_time=0.1",
+                              "analysis.start=0.05"])
     rows = skidding.sweep_loads(base, (6800.0, 2000.0, 200.0))
     assert all(row["status"] == "success" for row in rows)
     trend = skidding.trend(rows)

@@ -33,7 +33,8 @@ Z = 15
 
 
 def scene_of(*overrides, path=STEADY):
-    return build_scene(load_spec(path, list(overrides)))
+    """The scene of the document's dry model (the scenario's variant "dry") with ``overrides``."""
+    return build_scene(load_spec(path, ["scenario.variant=dry", *overrides]))
 
 
 ROLLER_GUIDED = "bearing.cage_guidance=rollers"
@@ -61,6 +62,16 @@ def test_each_scene_builds_only_what_it_needs(overrides, counts):
     assert scene_counts(scene_of(*overrides)) == {**counts, "slewing_bearings": 0, "journal_bearings": 0, "unbalances": 0}
 
 
+def test_the_lubricated_default_builds_its_film_and_churning():
+    """The scenario's default variant, lubricated: constraint cage (2Z raceway pairs, Z joints) on its land (one
+    contact pair for the land's rim and the oil film on it, one journal bearing), the churning of each roller and
+    of the cage (Z + 1 drags)."""
+    scene = build_scene(load_spec(STEADY))
+    assert scene_counts(scene) == {"bodies": Z + 2, "pairs": 2 * Z + 1, "constraints": Z, "loads": 2, "drives": 1,
+                                   "drags": Z + 1, "sensors": 4, "slewing_bearings": 0, "journal_bearings": 1,
+                                   "unbalances": 0}
+
+
 def test_full_complement_has_no_cage_and_neighbour_pairs_only():
     scene = scene_of("cage.model=none")
     assert "cage" not in [b.name for b in scene.bodies]
@@ -77,7 +88,7 @@ def test_gear_train_scene_has_train_loads_and_no_servo():
 
 def test_initial_rolling_state_is_epicyclic_with_zero_slip():
     """Rollers start at the epicyclic speeds: pure rolling at both raceways (slip ~ 0), cage at ω_c."""
-    spec = load_spec(STEADY, ["scenario.gravity=0", "load.radial=0"])
+    spec = load_spec(STEADY, ["scenario.variant=dry", "scenario.gravity=0", "load.radial=0"])
     scene = build_scene(spec)
     geometry = BearingGeometry.from_spec(spec.bearing)
     q, v = scene.initial_state()
@@ -89,7 +100,7 @@ def test_initial_rolling_state_is_epicyclic_with_zero_slip():
 
 
 def test_seed_preset_is_the_coherent_document_bearing():
-    geometry = BearingGeometry.from_spec(load_spec(STEADY).bearing)
+    geometry = BearingGeometry.from_spec(load_spec(STEADY, ["scenario.variant=dry"]).bearing)
     assert geometry.roller_diameter == pytest.approx((0.260 - 0.210) / 2, rel=1e-12)
     assert geometry.pitch_diameter == pytest.approx(0.235)
     assert abs(geometry.clearance) < 1e-15

@@ -38,7 +38,7 @@ def test_skidding_writes_the_sweep(tmp_path, capsys):
 
 def test_skidding_map_writes_the_grid_and_its_figures(tmp_path, capsys):
     out = tmp_path / "map"
-    code = main(["skidding-map", str(SCENARIOS / "seed_hss_lubricated.toml"), "--out", str(out), "--loads",
+    code = main(["skidding-map", str(STEADY), "--out", str(out), "--loads",
                  "6800,2000", "--temperatures", "60", "--speeds", "1500", "--minimum-load", "4000,9000", "--quiet"])
     assert code == 0
     assert {path.name for path in out.iterdir()} == {"skidding_map.csv", "skidding_map.md", "skidding_map.png",

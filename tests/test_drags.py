@@ -146,7 +146,7 @@ def test_the_lubricated_seed_bearings_no_load_torque_is_of_palmgrens_order(tempe
 
     from cases import SCENARIOS
 
-    spec = load_spec(SCENARIOS / "seed_hss_lubricated.toml", [f"lubricant.temperature={temperature}"])
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [f"lubricant.temperature={temperature}"])
     scene = build_scene(spec)
     drag = next(f for f in scene.forces if isinstance(f, Drag))
     film = next(f for f in scene.forces if isinstance(f, JournalFilm))

@@ -34,7 +34,9 @@ from bearing_mbs.runner.checks import run_checks
 from cases import SCENARIOS
 
 STEADY = str(SCENARIOS / "seed_hss_steady.toml")
-SHORT = ["--set", "scenario.end_time=0.002", "--set", "analysis.start=0.001"]
+#: The document's dry model (the steady scenario's variant "dry"), whose step limits these tests cite.
+DRY = ["--set", "scenario.variant=dry"]
+SHORT = [*DRY, "--set", "scenario.end_time=0.002", "--set", "analysis.start=0.001"]
 #: The progress bar's unit: once printed, the engine is stepping (compilation is behind it).
 STEPPING = "s simulated"
 
@@ -47,7 +49,7 @@ def _signalled_run(tmp_path: Path, engine: str, number: int) -> tuple[int, Path,
     """Start a long run in a child process, send ``number`` once it is stepping; (exit code, out, its stderr)."""
     out = tmp_path / "out"
     command = [sys.executable, "-m", "bearing_mbs.cli", "run", STEADY, "--out", str(out), "--no-figures",
-               "--engine", engine, "--set", "scenario.end_time=1.0", "--set", "analysis.start=0.0"]
+               "--engine", engine, *DRY, "--set", "scenario.end_time=1.0", "--set", "analysis.start=0.0"]
     child = subprocess.Popen(command, stderr=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1,
                              cwd=Path(__file__).resolve().parents[1], env={**os.environ, "TQDM_MININTERVAL": "0"})
     stepping = threading.Event()
@@ -137,7 +139,8 @@ def test_a_step_far_above_the_limit_is_suspect(tmp_path):
 
 @pytest.fixture(scope="module")
 def finished():
-    spec = load_spec(STEADY, ["scenario.end_time=0.002", "analysis.start=0.001", "solver.engine=reference"])
+    spec = load_spec(STEADY, ["scenario.variant=dry", "scenario.end_time=0.002", "analysis.start=0.001",
+                              "solver.engine=reference"])
     scene, result = run_spec(spec)
     assert result.status == SUCCESS, [c.line() for c in result.checks]
     return spec, scene, result

@@ -15,9 +15,12 @@ from bearing_mbs.analysis import energy_balance_error
 from bearing_mbs.engines import simulate
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.runner import summarize
+
 from cases import SCENARIOS
 
-LUBRICATED = ["lubricant.oil=iso_vg_320_mineral", "contact.inner_race.friction_law=ehl",
+#: The raceways' traction and rolling resistance alone: the scenario's dry model (its linear drag calibrated to
+#: Palmgren's M_0, no land film, the cage without side rings) with EHL raceways and the constraint cage.
+LUBRICATED = ["scenario.variant=dry", "lubricant.oil=iso_vg_320_mineral", "contact.inner_race.friction_law=ehl",
               "contact.outer_race.friction_law=ehl", "contact.inner_race.ehl_rolling_resistance=true",
               "contact.outer_race.ehl_rolling_resistance=true", "cage.model=constraint", "solver.output_interval=1e-4"]
 ENGINES = {
@@ -79,9 +82,9 @@ def test_colder_oil_skids_more():
 
 
 def test_the_energy_audit_closes_with_churning_drag_and_the_land_film():
-    """The shipped lubricated scenario (churning drag ∝ v², the cage on its land film): the reference engine
+    """The shipped lubricated model (churning drag ∝ v², the cage on its land film): the reference engine
     closes the energy audit to 1e-8 over 10 ms, with the drags and the film doing work."""
-    spec = load_spec(SCENARIOS / "seed_hss_lubricated.toml",
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml",
                      ["solver.engine=reference", "solver.reference.method=rk4", "solver.reference.step=2e-7",
                       "scenario.end_time=0.01", "analysis.start=0.005", "load.radial=6800"])
     scene = build_scene(spec)
@@ -99,7 +102,7 @@ def test_the_penalty_cages_lag_grows_with_its_pocket_play():
     bound: 0.27 and 1.09 %); required: at least twice, where a skidding of the loaded rollers would not depend on
     H. 0.2 s each."""
     def slip(play):
-        spec = load_spec(SCENARIOS / "seed_hss_lubricated.toml",
+        spec = load_spec(SCENARIOS / "seed_hss_steady.toml",
                          ["cage.model=penalty", f"bearing.pocket_clearance={play}", "scenario.end_time=0.2",
                           "analysis.start=0.05"])
         scene = build_scene(spec)

@@ -11,7 +11,7 @@ import pytest
 from bearing_mbs.cli import main
 from bearing_mbs.contact.normal import NORMAL_LAWS
 from bearing_mbs.models import build_scene, load_spec, spec_from_mapping
-from bearing_mbs.spec import SpecError, to_mapping
+from bearing_mbs.spec import SpecError, read_scenario, to_mapping
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 CASE3 = SCENARIOS / "seed_case3.toml"
@@ -141,6 +141,40 @@ def test_a_bearing_spec_round_trips_through_its_mapping():
     assert spec_from_mapping(json.loads(json.dumps(to_mapping(spec)))) == spec
 
 
+def test_a_variant_changes_only_what_it_names_and_an_override_beats_it(tmp_path):
+    """[scenario] variant applies its [variants.<name>] table's values over the file's, an override may choose
+    the variant and overrides win over it; the spec holds the result, not the variant's name."""
+    path = tmp_path / "variants.toml"
+    text = (SCENARIOS / "seed_case2.toml").read_text().replace("[scenario]\n", "[scenario]\nvariant = 'soft'\n", 1)
+    path.write_text(text + "\n[variants.soft]\ncontact.wall = { restitution = 0.5 }\nscenario.end_time = 0.05\n"
+                    "\n[variants.base]\n")
+    base = load_spec(SCENARIOS / "seed_case2.toml")
+    soft = load_spec(path)
+    assert soft.contact.wall.restitution == 0.5 and soft.scenario.end_time == 0.05
+    assert to_mapping(soft) == to_mapping(load_spec(SCENARIOS / "seed_case2.toml", [
+        "contact.wall.restitution=0.5", "scenario.end_time=0.05"]))
+    assert load_spec(path, ["scenario.variant=base"]) == base
+    assert load_spec(path, ["scenario.end_time=0.2"]).scenario.end_time == 0.2  # the override wins
+    assert "variant" not in to_mapping(soft)["scenario"]
+
+
+def test_the_seed_hss_scenarios_are_lubricated_and_their_dry_variant_is_the_documents_model():
+    """The lubricated default: EHL raceways with rolling resistance, churning, the land film and the side rings,
+    the constraint cage. The dry variant: the document's regularised Coulomb (erf) raceways, no lubricant section, the
+    cage without side rings (the preset's width, the 55 mm pocket length) and the penalty cage."""
+    for name in ("steady", "startup", "load_drop", "emergency_stop", "gear_driven"):
+        path = SCENARIOS / f"seed_hss_{name}.toml"
+        lubricated, dry = load_spec(path), load_spec(path, ["scenario.variant=dry"])
+        for race in (lubricated.contact.inner_race, lubricated.contact.outer_race):
+            assert (race.friction_law, race.ehl_rolling_resistance) == ("ehl", True)
+        assert (lubricated.lubricant.model, lubricated.lubricant.land_film) == ("churning", True)
+        assert (lubricated.cage.model, lubricated.bearing.cage_width) == ("constraint", 0.071)
+        for race in (dry.contact.inner_race, dry.contact.outer_race):
+            assert (race.friction_law, race.ehl_rolling_resistance) == ("erf", False)
+        assert dry.lubricant.temperature is None and dry.cage.model == "penalty"
+        assert dry.drive == lubricated.drive and dry.load == lubricated.load
+
+
 def test_an_old_method_name_is_accepted_with_a_warning():
     """Exudyn's classic Runge–Kutta is ``rk4``, as on the reference engine; ``rk44`` still loads, and warns."""
     with pytest.warns(FutureWarning, match="rk4"):
@@ -166,6 +200,6 @@ def test_the_analysis_window_as_a_fraction_of_the_run():
 
 
 def _steady_with_fraction(fraction, start=None):
-    data = tomllib.loads((SCENARIOS / "seed_hss_steady.toml").read_text())
+    data = read_scenario(SCENARIOS / "seed_hss_steady.toml")
     data["analysis"] = {"start_fraction": fraction, **({"start": start} if start is not None else {})}
     return data

@@ -14,14 +14,13 @@ At least 500 examples of each per model in the default run.
 from __future__ import annotations
 
 import copy
-import tomllib
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from bearing_mbs.models import MODELS, spec_from_mapping
-from bearing_mbs.spec import SpecError
+from bearing_mbs.spec import SpecError, read_scenario
 
 from cases import SCENARIOS
 
@@ -41,7 +40,7 @@ values = st.recursive(scalars, lambda inner: st.one_of(st.lists(inner, max_size=
 
 
 def _base(model: str) -> dict:
-    return tomllib.loads((SCENARIOS / BASES[model]).read_text())
+    return read_scenario(SCENARIOS / BASES[model])
 
 
 def _paths(data, prefix=()):

@@ -31,6 +31,8 @@ from bearing_mbs.studies.table import read_rows
 from cases import SCENARIOS
 
 BASE = SCENARIOS / "seed_hss_steady.toml"
+#: The suite's base: the document's dry model (the scenario's variant "dry").
+DRY = ["scenario.variant=dry"]
 
 
 class FakeRunner:
@@ -72,7 +74,7 @@ def test_failure_reasons_come_from_the_failure_kinds():
 def test_every_case_builds_a_valid_scene():
     from bearing_mbs.models import build_scene
 
-    base = load_spec(BASE)
+    base = load_spec(BASE, DRY)
     by_name = {case.name: case for case in stability.CASES}
     counts = {}
     for name in CASE_NAMES:
@@ -98,7 +100,7 @@ def check_suite(directory, summary, cases, solvers):
 
 def test_reduced_suite(tmp_path):
     """The default-test version: 5 cases, the reference's three fixed-step integrators and generalized-alpha."""
-    summary = stability.study(load_spec(BASE), tmp_path, cases=REDUCED_CASES, solvers=REDUCED_SOLVERS)
+    summary = stability.study(load_spec(BASE, DRY), tmp_path, cases=REDUCED_CASES, solvers=REDUCED_SOLVERS)
     check_suite(tmp_path, summary, REDUCED_CASES, REDUCED_SOLVERS)
     rows = {(r["case"], r["solver"]): r for r in read_rows(tmp_path / "stability.csv")}
     nominal = rows[("nominal", "rk4")]
@@ -111,7 +113,8 @@ def test_reduced_suite(tmp_path):
 def test_stability_command_resumes(tmp_path, capsys):
     from bearing_mbs.cli import main
 
-    arguments = ["stability", str(BASE), "--out", str(tmp_path), "--cases", "nominal", "--solvers", "reference/rk4"]
+    arguments = ["stability", str(BASE), "--out", str(tmp_path), "--cases", "nominal", "--solvers", "reference/rk4",
+                 "--set", *DRY]
     assert main(arguments) == 0
     assert "1 of 1 explicit cells (100 %)" in capsys.readouterr().out
     first = (tmp_path / "stability.csv").read_text()
@@ -122,5 +125,5 @@ def test_stability_command_resumes(tmp_path, capsys):
 
 @pytest.mark.slow
 def test_full_suite(tmp_path):
-    summary = stability.study(load_spec(BASE), tmp_path, cases=CASE_NAMES, solvers=SOLVERS)
+    summary = stability.study(load_spec(BASE, DRY), tmp_path, cases=CASE_NAMES, solvers=SOLVERS)
     check_suite(tmp_path, summary, CASE_NAMES, SOLVERS)

@@ -124,7 +124,8 @@ def test_a_roller_on_the_zone_edge_makes_finite_differences_differ_from_the_tang
     pytest.param("reference", "penalty", marks=pytest.mark.slow),     # run cross-checks the engines instead
 ])
 def test_steady_running_matches_the_quasi_static_solution(engine, cage):
-    """Issue 3 acceptance: seed_hss_steady (1500 rpm, 68 kN, zero clearance, gravity on), window 0.05–0.1 s.
+    """Issue 3 acceptance: seed_hss_steady's dry model (1500 rpm, 68 kN, zero clearance, gravity on), window
+    0.05–0.1 s.
 
     Reference: solve_radial with the centrifugal force of 1500 rpm (F_c = 123 N per roller) and the load
     68 kN plus the inner ring's weight (454 N). max_roller_load (the largest inner-raceway force over the
@@ -136,7 +137,7 @@ def test_steady_running_matches_the_quasi_static_solution(engine, cage):
     land: a roller-guided penalty cage whirls within its pocket play (~3 mm) and the rollers bunch, which put
     max_roller_load and the displacement 2–4 % high (docs/cage-models.md).
     """
-    spec = load_spec(STEADY, [f"solver.engine={engine}", f"cage.model={cage}"])
+    spec = load_spec(STEADY, ["scenario.variant=dry", f"solver.engine={engine}", f"cage.model={cage}"])
     from bearing_mbs.runner import run_spec
 
     scene, result = run_spec(spec)

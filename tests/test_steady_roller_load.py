@@ -24,7 +24,8 @@ from cases import SCENARIOS
 
 def test_steady_peak_matches_the_quasi_static_solution():
     spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [
-        "bearing.outer_race_diameter=0.26004", "drive.speed_rpm=10", "load.radial=2000", "load.ramp_time=0.05",
+        "scenario.variant=dry", "bearing.outer_race_diameter=0.26004", "drive.speed_rpm=10", "load.radial=2000",
+        "load.ramp_time=0.05",
         "scenario.end_time=0.3", "analysis.start=0.15"])
     assert spec.bearing.clearance == pytest.approx(4e-5)
     scene, result = run_spec(spec)

@@ -24,10 +24,13 @@ from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
 from bearing_mbs.runner import summarize
 from bearing_mbs.spec import SpecError
+
 from cases import SCENARIOS
 
-LUBRICATED = ["lubricant.oil=iso_vg_320_mineral", "lubricant.temperature=60", "contact.inner_race.friction_law=ehl",
-              "contact.outer_race.friction_law=ehl", "cage.model=constraint"]
+#: The scenario's dry model (variant "dry") with EHL raceways and the constraint cage: each test adds the losses
+#: it needs.
+LUBRICATED = ["scenario.variant=dry", "lubricant.oil=iso_vg_320_mineral", "lubricant.temperature=60",
+              "contact.inner_race.friction_law=ehl", "contact.outer_race.friction_law=ehl", "cage.model=constraint"]
 
 
 def spec_of(*overrides):
@@ -103,7 +106,7 @@ def test_exudyn_settles_on_the_quasi_static_slip(case):
 @pytest.mark.parametrize("scenario, overrides, field", [
     ("seed_hss_startup.toml", [], "drive.profile"),  # a speed ramp has no steady state
     ("seed_hss_load_drop.toml", [], "load.profile"),  # nor has a load step
-    ("seed_hss_steady.toml", ["cage.model=none"], "cage.model"),
+    ("seed_hss_steady.toml", ["scenario.variant=dry", "cage.model=none"], "cage.model"),
 ])
 def test_a_scene_without_a_steady_caged_state_is_refused(scenario, overrides, field):
     scene = build_scene(load_spec(SCENARIOS / scenario, overrides))

@@ -6,18 +6,12 @@ import copy
 from pathlib import Path
 
 from bearing_mbs.models.registry import MODELS
-from bearing_mbs.spec import Spec, SpecError, apply_override, from_mapping, parse_override, read_toml
+from bearing_mbs.spec import Spec, SpecError, from_mapping, read_scenario
 
 
 def load_spec(path: str | Path, overrides: list[str] = ()) -> Spec:
-    """Read a TOML scenario file, apply ``section.key=value`` overrides, validate everything."""
-    if isinstance(overrides, str):
-        raise SpecError("overrides", overrides, "a list of 'section.key=value' strings, not one string")
-    data = read_toml(path)
-    for text in overrides:
-        keys, value = parse_override(text)
-        apply_override(data, keys, value)
-    return spec_from_mapping(data)
+    """Read a TOML scenario file, apply its variant and the ``section.key=value`` overrides, validate everything."""
+    return spec_from_mapping(read_scenario(path, overrides))
 
 
 def spec_from_mapping(data: dict) -> Spec:

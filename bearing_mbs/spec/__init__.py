@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from bearing_mbs.spec.contact import ContactSpec
 from bearing_mbs.spec.convergence import ConvergenceSpec, RunSettings
 from bearing_mbs.spec.fields import SpecError, non_negative, positive, require
-from bearing_mbs.spec.loading import apply_override, from_mapping, parse_override, read_toml, to_mapping
+from bearing_mbs.spec.loading import apply_override, from_mapping, parse_override, read_scenario, read_toml, to_mapping
 from bearing_mbs.spec.solver import ExudynSolver, ReferenceSolver, SolverSpec
 
 
@@ -68,6 +68,7 @@ __all__ = [
     "apply_override",
     "from_mapping",
     "parse_override",
+    "read_scenario",
     "read_toml",
     "to_mapping",
 ]

@@ -5,6 +5,10 @@ given for a field whose default is itself a table (``[bearing.cage_material]``) 
 so a partial table changes only the keys it names.
 ``--set section.key=value`` overrides are applied to the raw mapping before conversion, so they go
 through exactly the same validation as the file.
+
+A scenario file may hold named variants of its model: ``[variants.<name>]`` tables of changes to its other
+tables, the one named by ``[scenario] variant`` applied when the file is read (:func:`read_scenario`), before the
+overrides. A spec holds the model the variant made, not the variant's name.
 """
 
 from __future__ import annotations
@@ -151,6 +155,40 @@ def apply_override(data: dict, keys: list[str], value) -> None:
         node[int(last)] = value
     else:
         node[last] = value
+
+
+def read_scenario(path: str | Path, overrides: list[str] = ()) -> dict:
+    """A scenario file as a raw mapping: its variant (``[scenario] variant``, which an override may choose) applied,
+    then the ``section.key=value`` overrides. ``[variants]`` and ``variant`` are gone from the result."""
+    if isinstance(overrides, str):
+        raise SpecError("overrides", overrides, "a list of 'section.key=value' strings, not one string")
+    data = read_toml(path)
+    changes = [parse_override(text) for text in overrides]
+    variants = data.pop("variants", {})
+    scenario = data.get("scenario") if isinstance(data.get("scenario"), dict) else {}
+    name = scenario.pop("variant", None)
+    for keys, value in changes:
+        if keys == ["scenario", "variant"]:
+            name = value
+    if name is not None:
+        if not isinstance(variants, dict) or not isinstance(variants.get(name), dict):
+            names = ", ".join(variants) if isinstance(variants, dict) and variants else "the file has none"
+            raise SpecError("scenario.variant", name, f"must name one of the file's [variants] tables ({names})")
+        for keys, value in _leaves(variants[name]):
+            apply_override(data, keys, value)
+    for keys, value in changes:
+        if keys != ["scenario", "variant"]:
+            apply_override(data, keys, value)
+    return data
+
+
+def _leaves(table: dict, keys: tuple[str, ...] = ()):
+    """(dotted keys, value) of every value of a nested table that is not itself a table."""
+    for key, value in table.items():
+        if isinstance(value, dict) and value:
+            yield from _leaves(value, (*keys, key))
+        else:
+            yield [*keys, key], value
 
 
 def read_toml(path: str | Path) -> dict:

@@ -71,10 +71,10 @@ class ExudynSolver:
     method: one of :data:`EXUDYN_METHODS` (a method both engines have carries one name: ``rk4``; the old
     ``rk44`` is accepted with a warning). step [s] > 0: the fixed step of explicit methods, the largest step
     of the adaptive explicit methods, and the nominal step of implicit methods (which halve it where Newton's
-    method fails, e.g. at a stick–slip transition, and recover). tolerance: relative and absolute tolerance of adaptive methods and the
-    Newton tolerance of implicit ones. connector: how contact forces reach Exudyn: ``compiled`` (the numba
-    kernel in one ObjectGenericODE2), ``python`` (its numpy twin) or ``native`` (Exudyn's
-    ObjectContactSphereSphere, normal force only). spectral_radius: generalized-alpha ρ∞ in [0, 1].
+    method fails, e.g. at a stick–slip transition, and recover). tolerance: relative and absolute tolerance of
+    adaptive methods and the Newton tolerance of implicit ones. connector: how contact forces reach Exudyn:
+    ``compiled`` (the numba kernel in one ObjectGenericODE2), ``python`` (its numpy twin) or ``native``
+    (Exudyn's ObjectContactSphereSphere, normal force only). spectral_radius: generalized-alpha ρ∞ in [0, 1].
     """
 
     method: str = "generalized_alpha"

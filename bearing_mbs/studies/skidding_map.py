@@ -2,7 +2,7 @@ r"""Steady skidding over load × oil temperature × speed, from the quasi-static
 
 ``bearing-mbs skidding-map SCENARIO.toml --out DIR`` solves
 :func:`~bearing_mbs.models.cylindrical_roller.steady_skidding.solve_skidding` for the base scenario (a lubricated
-bearing at constant speed, e.g. ``scenarios/seed_hss_lubricated.toml``) at every radial load, oil temperature and
+bearing at constant speed, e.g. ``scenarios/seed_hss_steady.toml``) at every radial load, oil temperature and
 shaft speed given, a few seconds each where a dynamic run at light load needs seconds of simulated time to settle
 (docs/skidding.md). It writes
 

@@ -24,8 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from bearing_mbs.models import spec_from_mapping
-from bearing_mbs.spec import SpecError, apply_override, read_toml, to_mapping
-from bearing_mbs.spec.loading import parse_override
+from bearing_mbs.spec import SpecError, apply_override, read_scenario, to_mapping
 
 RESULT_FILE = "result.npz"
 
@@ -77,10 +76,7 @@ class SimulationModel(RunModel):
     _base: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        data = read_toml(self.scenario)
-        for text in self.overrides:
-            keys, value = parse_override(text)
-            apply_override(data, keys, value)
+        data = read_scenario(self.scenario, list(self.overrides))
         spec_from_mapping(data)  # raises SpecError naming the field
         object.__setattr__(self, "_base", data)
 
