@@ -232,10 +232,15 @@ def markdown_table(sweeps: dict[str, list[dict]]) -> str:
                 f"{100 * row['cage_slip_first_half']:.3g}, {100 * row['cage_slip_second_half']:.3g} | "
                 f"{100 * row['quasi_static_slip']:.3g} | {100 * row['resolution']:.3g} | "
                 f"{'yes' if row['settled'] else 'no'} | "
-                f"{row['max_roller_slip_inner'] or float('nan'):.3g} | {row['max_roller_load']:.0f} | "
-                f"{row['max_pocket_force'] or float('nan'):.0f} | "
-                f"{1e6 * (row['max_cage_eccentricity'] or float('nan')):.0f} | {row['wall_time_s']:.1f} |")
+                f"{_number(row['max_roller_slip_inner']):.3g} | {row['max_roller_load']:.0f} | "
+                f"{_number(row['max_pocket_force']):.0f} | "
+                f"{1e6 * _number(row['max_cage_eccentricity']):.0f} | {row['wall_time_s']:.1f} |")
     return "\n".join(lines) + "\n"
+
+
+def _number(value) -> float:
+    """A table's value: NaN for a quantity the run does not have (None), the value otherwise, zero included."""
+    return float("nan") if value is None else value
 
 
 def trend_text(sweeps: dict[str, list[dict]]) -> str:
