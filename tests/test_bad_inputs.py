@@ -130,6 +130,7 @@ SCENARIO_ROWS = {
                                    "contact.inner_race.traction_curve"),
     "curve model without its curve": (STEADY, ["contact.inner_race.friction_law='ehl'", "contact.inner_race.traction_model='curve'"],
                                       "contact.inner_race.traction_curve"),
+    "pocket film without an oil temperature": (STEADY, ["lubricant.pocket_film=true"], "lubricant.temperature"),
     "unknown variant": (STEADY, ["scenario.variant='wet'"], "scenario.variant"),
     "variant of a file without variants": (DROP, ["scenario.variant=dry"], "scenario.variant"),
     "EHL rolling resistance on a dry law": (STEADY, ["contact.inner_race.ehl_rolling_resistance=true"],

@@ -37,7 +37,8 @@ def lubricated_row(rng, k):
 
 
 def random_scene(rng, n_bodies=4, n_pairs=40):
-    """Bodies with random states and pairs of every kind and friction law, most of them penetrating."""
+    """Bodies with random states and pairs of every kind and friction law, most of them penetrating; every
+    seventh pair carries an oil film (bearing_mbs.fluid_film.cylinder_plane)."""
     bodies = tuple(
         Body(f"b{i}", mass=rng.uniform(0.1, 2), inertia=rng.uniform(1e-4, 1e-2), position=(0.0, 0.0, 0.0))
         for i in range(n_bodies)
@@ -60,6 +61,8 @@ def random_scene(rng, n_bodies=4, n_pairs=40):
             regularisation_speed=rng.uniform(1e-3, 1e-1),
             rolling_resistance_arm=rng.uniform(0, 1e-3),
             traction=lubricated_row(rng, k // len(FRICTION_LAWS)) if FRICTION_LAWS[k % len(FRICTION_LAWS)] == "ehl" else (),
+            film=(rng.uniform(0.01, 0.06), rng.uniform(0.01, 0.5), rng.uniform(1e-3, 1e-2), rng.uniform(1e-7, 1e-6))
+            if k % 7 == 3 else (),
         )
         direction = rng.normal(size=2)
         pairs.append(
@@ -222,13 +225,13 @@ def test_pure_rolling_inside_a_fixed_ring_has_zero_slip_and_the_orbital_rolling_
 
 def lubricated(scene, rng, rolling_resistance):
     """The scene with every pair lubricated (``ehl``, random traction rows) and its hydrodynamic rolling
-    resistance on or off; the same rows for the same generator state."""
+    resistance on or off, without oil films; the same rows for the same generator state."""
     column = TRACTION_COLUMNS.index("rolling_resistance")
 
     def law(k, pair):
         row = list(lubricated_row(rng, k))
         row[column] = float(rolling_resistance)
-        return replace(pair, law=replace(pair.law, friction_law="ehl", traction=tuple(row)))
+        return replace(pair, law=replace(pair.law, friction_law="ehl", traction=tuple(row), film=()))
 
     return replace(scene, pairs=tuple(law(k, p) for k, p in enumerate(scene.pairs)))
 
@@ -260,3 +263,37 @@ def test_the_hydrodynamic_rolling_resistance_dissipates_its_force_times_the_roll
         assert np.sum(pairs_on[:, 6] - pairs_off[:, 6]) == pytest.approx(expected, rel=1e-9, abs=rounding)
         touched.update(kinds[touching])
     assert touched == set(PAIR_KINDS)
+
+
+def test_the_oil_film_does_the_power_of_its_load_and_shears():
+    """A pair's film (bearing_mbs.fluid_film.cylinder_plane: load W, Couette shear F_c, Poiseuille shear f_P)
+    must do the power W dh/dt + F_c slip − f_P u on the bodies (the Poiseuille shear acting as a rolling
+    resistance does), at the pair kinematics' gap (or the film's floor), gap rate, slip and rolling speed; and the
+    film's loss, −W dh/dt + f_P u − F_c slip, is never negative: by parts its first two terms are the Poiseuille
+    dissipation ∫ h³p'²/12η dx. The power is summed from the body forces and velocities (Σ F·v) of the scene with
+    and without the films, 1e-9 relative or 1e-12 of the sums it is a difference of."""
+    from bearing_mbs.fluid_film.cylinder_plane import film_forces
+
+    rng = np.random.default_rng(10)
+    with_films = random_scene(rng)
+    without = Scene("dry", with_films.bodies, tuple(replace(p, law=replace(p.law, film=())) for p in with_films.pairs),
+                    forces=with_films.forces)
+    on, off = pack_scene(with_films), pack_scene(without)
+    films = [k for k, p in enumerate(with_films.pairs) if p.law.film]
+    for _ in range(30):
+        q, v, latched = random_state(rng, with_films)
+        forces_on, pairs_on = evaluate(scene_forces, on, 0.0, q, v, latched)
+        forces_off, pairs_off = evaluate(scene_forces, off, 0.0, q, v, latched)
+        expected, losses = 0.0, []
+        for k in films:
+            length, viscosity, half_width, floor = with_films.pairs[k].law.film
+            gap, rate, slip, rolling = pairs_on[k, [0, 1, 2, 7]]
+            load, couette, poiseuille = film_forces(viscosity, rolling, slip, rate, with_films.pairs[k].radius_b,
+                                                    length, half_width, max(gap, floor))
+            expected += load * rate + couette * slip - poiseuille * rolling
+            losses.append(pairs_on[k, 6] - pairs_off[k, 6])
+            assert losses[-1] == pytest.approx(-(load * rate + couette * slip - poiseuille * rolling), rel=1e-9,
+                                               abs=1e-12 * abs(pairs_on[k, 6]))
+        power = np.dot(forces_on - forces_off, v)
+        assert power == pytest.approx(expected, rel=1e-9, abs=1e-12 * np.abs(forces_on * v).sum())
+        assert min(losses) >= -1e-9 * max(abs(loss) for loss in losses)

@@ -159,19 +159,21 @@ def test_a_variant_changes_only_what_it_names_and_an_override_beats_it(tmp_path)
 
 
 def test_the_seed_hss_scenarios_are_lubricated_and_their_dry_variant_is_the_documents_model():
-    """The lubricated default: EHL raceways with rolling resistance, churning, the land film and the side rings,
-    the constraint cage. The dry variant: the document's regularised Coulomb (erf) raceways, no lubricant section, the
-    cage without side rings (the preset's width, the 55 mm pocket length) and the penalty cage."""
+    """The lubricated default: EHL raceways with rolling resistance, churning, the land and pocket films and the
+    side rings, the constraint cage. The dry variant: the document's regularised Coulomb (erf) raceways, no
+    lubricant section, the cage without side rings (the preset's width, the 55 mm pocket length) and the penalty
+    cage."""
     for name in ("steady", "startup", "load_drop", "emergency_stop", "gear_driven"):
         path = SCENARIOS / f"seed_hss_{name}.toml"
         lubricated, dry = load_spec(path), load_spec(path, ["scenario.variant=dry"])
         for race in (lubricated.contact.inner_race, lubricated.contact.outer_race):
             assert (race.friction_law, race.ehl_rolling_resistance) == ("ehl", True)
-        assert (lubricated.lubricant.model, lubricated.lubricant.land_film) == ("churning", True)
+        assert (lubricated.lubricant.model, lubricated.lubricant.land_film, lubricated.lubricant.pocket_film) == (
+            "churning", True, True)
         assert (lubricated.cage.model, lubricated.bearing.cage_width) == ("constraint", 0.071)
         for race in (dry.contact.inner_race, dry.contact.outer_race):
             assert (race.friction_law, race.ehl_rolling_resistance) == ("erf", False)
-        assert dry.lubricant.temperature is None and dry.cage.model == "penalty"
+        assert dry.lubricant.temperature is None and not dry.lubricant.pocket_film and dry.cage.model == "penalty"
         assert dry.drive == lubricated.drive and dry.load == lubricated.load
 
 

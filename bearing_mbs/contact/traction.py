@@ -165,8 +165,16 @@ def rolling_resistance(force, rolling, regularisation_speed, share, radius_b):
     F_R [N] (:func:`rolling_force`) at rolling speed u [m/s], with a's share w of the contact point's motion
     (:func:`.kinematics.contact_point_share`) and b's radius r_b [m]: with :math:`f = F_R\,\mathrm{erf}(2u/v_{reg})`,
     :math:`((1/2 - w) f,\ (1 - w) r_b f)`; a receives the opposite. Scalars or arrays."""
-    signed = force * friction.erf_sign(rolling, regularisation_speed)
-    return (0.5 - share) * signed, (1.0 - share) * radius_b * signed
+    return inlet_shear_reaction(force * friction.erf_sign(rolling, regularisation_speed), share, radius_b)
+
+
+@register_jitable
+def inlet_shear_reaction(shear, share, radius_b):
+    r"""(tangential force on b [N] along t, couple on b [N m]) of a film's Poiseuille shear f [N] (summed over both
+    surfaces, positive along t), gathered at the contact point: :math:`((1/2 - w) f,\ (1 - w) r_b f)`, with a's
+    share w of the contact point's motion and b's radius r_b [m]; a receives the opposite. Their power is
+    :math:`-f u`. Scalars or arrays."""
+    return (0.5 - share) * shear, (1.0 - share) * radius_b * shear
 
 
 def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisation_speed):

@@ -21,6 +21,8 @@ from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
 from bearing_mbs.core.topology import Topology
 
 GROUND = -1
+#: The columns of a pair law's film (:attr:`PairLaw.film`).
+FILM_COLUMNS = ("length", "viscosity", "half_width", "floor")
 
 
 @dataclass(frozen=True)
@@ -54,6 +56,9 @@ class PairLaw:
     ``normal_law`` and ``restitution`` are kept for reporting and for the native Exudyn connector;
     the kernels use ``damping_factor`` (0 for the plain power law). ``traction`` is the row of
     :data:`bearing_mbs.contact.traction.TRACTION_COLUMNS` of a lubricated (``ehl``) pair, empty otherwise.
+    ``film`` is (length l [m], viscosity η [Pa s], the plane's half-width [m], floor [m]) of a pair that carries
+    the oil film of a cylinder on a plane (:mod:`bearing_mbs.fluid_film.cylinder_plane`, evaluated at the gap or
+    the floor, whichever is larger), empty otherwise.
     """
 
     normal_law: str
@@ -67,11 +72,14 @@ class PairLaw:
     regularisation_speed: float = 1e-2
     rolling_resistance_arm: float = 0.0
     traction: tuple[float, ...] = ()
+    film: tuple[float, ...] = ()
 
     def __post_init__(self):
         if (self.friction_law == "ehl") != (len(self.traction) == N_TRACTION_COLUMNS):
             raise ValueError(f"a pair law with friction_law {self.friction_law!r} has a traction row of "
                              f"{len(self.traction)} values: 'ehl' needs {N_TRACTION_COLUMNS}, the other laws none")
+        if self.film and (len(self.film) != len(FILM_COLUMNS) or min(self.film) <= 0):
+            raise ValueError(f"a pair law's film is ({', '.join(FILM_COLUMNS)}), all > 0, not {self.film}")
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,11 @@ Per pair it writes the columns of :data:`PAIR_OUTPUTS` into ``pair_out`` (for a 
 hydrodynamic rolling resistance, the friction force and rolling moment include that resistance's tangential force
 and couple, :mod:`bearing_mbs.contact.traction`); the power lost to damping, friction and rolling resistance goes
 to ``power[1]``. The elastic energy of the pairs is their potential energy.
+
+A pair whose law has a film (:attr:`~bearing_mbs.core.scene.PairLaw.film`) carries the oil film of its circle on
+a plane (:mod:`bearing_mbs.fluid_film.cylinder_plane`) whether it touches or not, at its gap or the film's floor,
+whichever is larger: the film's load adds to the normal force, its Couette shear to the friction force, and its
+Poiseuille shear acts as a rolling resistance does (its tangential force and couple).
 """
 
 from __future__ import annotations
@@ -33,7 +38,8 @@ from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
 from bearing_mbs.contact.twin import pair_geometry
 from bearing_mbs.contact.twin import regularised_sign as regularised_sign_twin
 from bearing_mbs.core.force_element import ForceElement
-from bearing_mbs.core.scene import ContactPair
+from bearing_mbs.core.scene import FILM_COLUMNS, ContactPair
+from bearing_mbs.fluid_film.cylinder_plane import film_forces
 
 _EHL = FRICTION_LAWS.index("ehl")  # read by numba as a compile-time constant
 
@@ -57,6 +63,7 @@ class PairArrays(NamedTuple):
     regularisation_speed: np.ndarray  # [m/s]
     rolling_resistance_arm: np.ndarray  # [m]
     traction: np.ndarray  # (P, N_TRACTION_COLUMNS): lubricated-traction rows, zeros for the other laws
+    film: np.ndarray  # (P, 4): the film's length [m], viscosity [Pa s], half-width [m] and floor [m]; zeros without
 
 
 def traction_rows(pairs) -> np.ndarray:
@@ -88,6 +95,8 @@ def pack(pairs) -> PairArrays:
         regularisation_speed=column(lambda p: p.law.regularisation_speed),
         rolling_resistance_arm=column(lambda p: p.law.rolling_resistance_arm),
         traction=traction_rows(pairs),
+        film=np.array([p.law.film or (0.0,) * len(FILM_COLUMNS) for p in pairs],
+                      dtype=float).reshape(-1, len(FILM_COLUMNS)),
     )
 
 
@@ -105,18 +114,29 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         gap, nx, ny, px, py = pair_position(
             kind, a, b, pairs.anchor[k, 0], pairs.anchor[k, 1], pairs.direction[k, 0], pairs.direction[k, 1],
             ra, rb, q, cos_theta[a] if a >= 0 else 1.0, sin_theta[a] if a >= 0 else 0.0)
+        film = pairs.film[k, 0] > 0.0
         gap_rate = slip = spin = rolling = cx = cy = 0.0  # all defined on every path, as inlining needs
-        if complete or gap < 0.0:
+        if complete or gap < 0.0 or film:
             gap_rate, slip, cx, cy, spin, rolling = pair_motion(kind, a, b, ra, rb, gap, nx, ny, px, py, q, v)
-        fn = ft = moment = loss = 0.0
-        if gap < 0.0:
-            approach = normal.reference_approach_speed(latched[k], gap_rate, pairs.approach_speed_floor[k])
-            elastic = normal.elastic_force(gap, pairs.stiffness[k], pairs.exponent[k])
-            fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
-            law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
-            ft = tangential_force(law, fn, pairs.friction_coefficient[k], slip, rolling, vreg, pairs.traction[k])
-            ft, moment = rolling_resistance(law, ft, fn, pairs.rolling_resistance_arm[k], spin, rolling,
-                                            ORIENTATION[kind], ra, rb, gap, vreg, pairs.traction[k])
+        fn = ft = moment = loss = elastic = 0.0
+        if gap < 0.0 or film:
+            if gap < 0.0:
+                approach = normal.reference_approach_speed(latched[k], gap_rate, pairs.approach_speed_floor[k])
+                elastic = normal.elastic_force(gap, pairs.stiffness[k], pairs.exponent[k])
+                fn = max(elastic * normal.hysteresis_factor(gap_rate, pairs.damping_factor[k], approach), 0.0)
+                law, vreg = pairs.friction_law[k], pairs.regularisation_speed[k]
+                ft = tangential_force(law, fn, pairs.friction_coefficient[k], slip, rolling, vreg, pairs.traction[k])
+                ft, moment = rolling_resistance(law, ft, fn, pairs.rolling_resistance_arm[k], spin, rolling,
+                                                ORIENTATION[kind], ra, rb, gap, vreg, pairs.traction[k])
+            if film:
+                film_load, couette, poiseuille = film_forces(pairs.film[k, 1], rolling, slip, gap_rate, rb,
+                                                             pairs.film[k, 0], pairs.film[k, 2],
+                                                             max(gap, pairs.film[k, 3]))
+                share = kinematics.contact_point_share(ORIENTATION[kind], ra, rb, gap)
+                tangential, couple = traction.inlet_shear_reaction(poiseuille, share, rb)
+                fn += film_load
+                ft += couette + tangential
+                moment += couple
             loss = -(fn - elastic) * gap_rate - ft * slip - moment * spin
             fx, fy = fn * nx - ft * ny, fn * ny + ft * nx
             forces[3 * b] += fx
@@ -157,6 +177,16 @@ def add_forces_twin(pairs, t, q, v, latched, forces, pair_out, power, complete):
     tangential, couple = traction.rolling_resistance(rolling_force, rolling, pairs.regularisation_speed, share,
                                                      pairs.radius_b)
     ft, moment = ft + tangential, moment + couple
+    film = pairs.film[:, 0] > 0
+    if film.any():
+        length, viscosity, half_width, floor = pairs.film[film].T
+        film_load, couette, poiseuille = film_forces(viscosity, rolling[film], slip[film], gap_rate[film],
+                                                     pairs.radius_b[film], length, half_width,
+                                                     np.maximum(gap[film], floor))
+        tangential, couple = traction.inlet_shear_reaction(poiseuille, share[film], pairs.radius_b[film])
+        fn[film] += film_load
+        ft[film] += couette + tangential
+        moment[film] += couple
     damping = fn - normal.elastic_force(gap, pairs.stiffness, pairs.exponent)
     loss = -damping * gap_rate - ft * slip - moment * spin
 

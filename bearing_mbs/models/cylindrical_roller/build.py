@@ -5,7 +5,8 @@ ring is fixed: it is the ground. Per roller: an inner-raceway pair (circle–cir
 (circle inside the hollow outer raceway); then, by cage model,
 
 * ``penalty``: four pocket pairs, roller against the document's pocket edges P and Q and their mirrors
-  inside the pitch circle (circle–point; see :mod:`bearing_mbs.geometry`);
+  inside the pitch circle (circle–point; see :mod:`bearing_mbs.geometry`), and with ``[lubricant] pocket_film``
+  two film pairs, the oil film between the roller and each flat pocket wall (circle–line, :func:`pocket_film_law`);
 * ``constraint``: the roller centre held at its pocket's orbital angle, θ_cage + ψ_k about the bearing axis (an
   orbit constraint), so that the cage's eccentricity on its land imposes no orbital speed on the rollers: the
   model of a cage whose pocket play takes up its float on the land. The pockets then turn the cage but do
@@ -32,7 +33,7 @@ from bearing_mbs.contact.line_contact import (
     palmgren_stiffness,
 )
 from bearing_mbs.contact.traction import TRACTION_COLUMNS, TRACTION_MODELS
-from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, Profile, Scene
+from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, PairLaw, Profile, Scene
 from bearing_mbs.core.topology import Topology
 from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.elements.journal_bearings import JournalFilm
@@ -93,7 +94,8 @@ def build_bearing_scene(spec: Spec) -> Scene:
     laws = {group: group_law(spec, geometry, group) for group in ("inner_race", "outer_race", "pocket", "land", "roller")}
     r_w = geometry.roller_diameter / 2
     pairs, constraints = [], []
-    groups = {"inner_race": [], "outer_race": [], "pocket": [], "roller": [], "land": []}
+    groups = {"inner_race": [], "outer_race": [], "pocket": [], "pocket_film": [], "roller": [], "land": []}
+    film_law = pocket_film_law(spec, geometry) if spec.lubricant.pocket_film else None
 
     def add(group, pair):
         groups[group].append(len(pairs))
@@ -109,6 +111,9 @@ def build_bearing_scene(spec: Spec) -> Scene:
             for label, point in geometry.pocket_points(k).items():
                 add("pocket", ContactPair(f"roller{k}-pocket_{label}", "circle_point", CAGE, roller, laws["pocket"],
                                          radius_b=r_w, anchor=point))
+            for label, (point, normal) in (geometry.pocket_walls(k).items() if film_law else ()):
+                add("pocket_film", ContactPair(f"roller{k}-pocket_{label}-film", "circle_line", CAGE, roller,
+                                               film_law, radius_b=r_w, anchor=point, direction=normal))
         elif spec.cage.model == "constraint":
             psi = geometry.roller_angles[k]
             constraints.append(OrbitConstraint(f"roller{k}-pocket", CAGE, roller, (math.cos(psi), math.sin(psi))))
@@ -148,8 +153,9 @@ def build_bearing_scene(spec: Spec) -> Scene:
     roles = {"inner_ring": [INNER_RING], "rollers": list(range(first_roller, first_roller + geometry.rollers))}
     if caged:
         roles["cage"] = [CAGE]
-    if groups["pocket"]:
-        groups["pocket"] = np.reshape(groups["pocket"], (geometry.rollers, -1))
+    for group in ("pocket", "pocket_film"):
+        if groups[group]:
+            groups[group] = np.reshape(groups[group], (geometry.rollers, -1))
     topology = Topology(bodies=roles, pairs={group: indices for group, indices in groups.items() if len(indices)})
     scene = Scene(spec.scenario.name, tuple(bodies), tuple(pairs), tuple(constraints),
                   (*loads, *drives, *drags, *films), gravity=(0.0, -spec.scenario.gravity), topology=topology)
@@ -188,6 +194,18 @@ def cage_drag(spec: Spec, geometry: BearingGeometry) -> float:
     density = mixture_density(lubricant.oil_fraction, lubricant.lubricant().density(lubricant.temperature))
     return cage_drag_coefficient(density, geometry.rollers, spec.bearing.cage_thickness, geometry.roller_length,
                                  geometry.cage_diameter / 2)
+
+
+def pocket_film_law(spec: Spec, geometry: BearingGeometry) -> PairLaw:
+    """The law of a pocket film pair: no dry contact of its own (the edge pairs have it), the film of the roller's
+    length on a wall of the pocket's height, in the oil at its operating temperature, floored at three times the
+    pocket's roughness (Λ = 3)."""
+    lubricant = spec.lubricant
+    viscosity = lubricant.lubricant().dynamic_viscosity(lubricant.temperature)
+    return PairLaw("power", stiffness=0.0, exponent=1.0, restitution=1.0, damping_factor=0.0,
+                   approach_speed_floor=spec.contact.pocket.approach_speed_floor,
+                   film=(geometry.roller_length, viscosity, geometry.pocket_wall_half_width,
+                         3 * spec.contact.pocket.roughness))
 
 
 def land_film(spec: Spec, geometry: BearingGeometry) -> JournalFilm:

@@ -137,6 +137,24 @@ class BearingGeometry:
         return points
 
 
+    def pocket_walls(self, k: int) -> dict[str, tuple[tuple[float, float], tuple[float, float]]]:
+        """(point, unit normal towards the roller) in the cage frame of pocket k's two flat walls, on the P and on
+        the Q side: square to the orbit at the roller's centre and the pocket clearance H from the centred
+        roller, as its edges are (:meth:`pocket_points`). Each spans the wall between its two edges, half-width
+        :attr:`pocket_wall_half_width`."""
+        psi = self.roller_angles[k]
+        centre_x, centre_y = self.pitch_diameter / 2 * math.cos(psi), self.pitch_diameter / 2 * math.sin(psi)
+        reach = self.roller_diameter / 2 + self.pocket_clearance
+        tangent_x, tangent_y = -math.sin(psi), math.cos(psi)
+        return {label: ((centre_x + sign * reach * tangent_x, centre_y + sign * reach * tangent_y),
+                        (-sign * tangent_x, -sign * tangent_y)) for label, sign in (("P", 1), ("Q", -1))}
+
+    @property
+    def pocket_wall_half_width(self) -> float:
+        """Half the radial extent [m] of a pocket wall, from the cage circle D_c to its mirror 2D_pw − D_c."""
+        return abs(self.cage_diameter - self.pitch_diameter) / 2
+
+
 def roller_mass(density: float, roller_diameter: float, roller_length: float) -> float:
     """m_r = ρ π D_w² L_w / 4 [kg]: a solid cylinder of density [kg/m³], diameter and length [m]."""
     return density * math.pi * roller_diameter**2 * roller_length / 4

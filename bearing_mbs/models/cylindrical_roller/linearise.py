@@ -45,7 +45,12 @@ eigenvalues of :math:`M^{-1}C`. The inner ring's share of the inner contact's co
 out. The roller's radial motion is an oscillator :math:`\omega^2 = (k_i + k_o)/m_r`,
 :math:`2\sigma = (c_{n,i} + c_{n,o})/m_r`; the inner ring on its rollers another,
 :math:`\omega^2 = \lambda_{max}(K_{bearing})/M_{ring}`; the velocity servo a decay :math:`\lambda = g/I_{ring}`.
-Pocket, land and roller–roller contacts carry no quasi-static load and are left out.
+Pocket, land and roller–roller contacts carry no quasi-static load and are left out. A pocket's oil film
+(``[lubricant] pocket_film``) is stiffest and most damping at its floor :math:`h_f`: there a roller pressed on the
+wall oscillates with the film's wedge stiffness :math:`k = -\partial W/\partial h` and squeeze damping
+:math:`c = -\partial W/\partial\dot h` (:func:`bearing_mbs.fluid_film.cylinder_plane.film_forces`, by central
+differences) at the entrainment of the roller's epicyclic spin in the cage, :math:`u = r|\omega_r - \omega_c|/2`
+at the highest shaft speed: :math:`\omega^2 = k/m_r`, :math:`2\sigma = c/m_r`.
 """
 
 from __future__ import annotations
@@ -60,6 +65,7 @@ from bearing_mbs.contact.line_contact import power_law_stiffness
 from bearing_mbs.contact.traction import zero_slip_slope
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import Drag, Load, VelocityServo
+from bearing_mbs.fluid_film.cylinder_plane import film_forces
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed, roller_centrifugal_force
 from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, solve_radial
 from bearing_mbs.models.cylindrical_roller.spec import diametral_clearance
@@ -102,6 +108,7 @@ def linearise(scene: Scene) -> Linearisation | None:
     modes = []
     for label, inner_load, outer_load in roller_cases:
         modes += roller_modes(layout, label, inner_load, outer_load)
+    modes += pocket_film_modes(layout)
     if ring_mode is not None:
         modes.append(ring_mode)
     if layout.servo_gain > 0:
@@ -308,3 +315,23 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
         modes.append(Mode(f"radial contact, {label}", "rollers", -(ki + ko) / m, -(dni + dno) / m,
                           max(inner_load, outer_load)))
     return modes
+
+
+def pocket_film_modes(layout: BearingLayout) -> list[Mode]:
+    """The mode of a roller on a pocket wall's oil film at the film's floor (none without pocket films)."""
+    films = layout.scene.topology.group("pocket_film")
+    if films.size == 0:
+        return []
+    pair = layout.scene.pairs[int(np.ravel(films)[0])]
+    length, viscosity, half_width, floor = pair.law.film
+    cage = epicyclic_cage_speed(layout.shaft_speed, 2 * layout.roller_radius, layout.pitch_diameter)
+    entrainment = layout.roller_radius * abs(-cage * layout.pitch_diameter / (2 * layout.roller_radius) - cage) / 2
+
+    def load(gap, rate):
+        return film_forces(viscosity, entrainment, 0.0, rate, pair.radius_b, length, half_width, gap)[0]
+
+    gap_step, rate_step = 1e-3 * floor, 1e-6 * max(entrainment, 1.0)
+    stiffness = -(load(floor + gap_step, 0.0) - load(floor - gap_step, 0.0)) / (2 * gap_step)
+    damping = -(load(floor, rate_step) - load(floor, -rate_step)) / (2 * rate_step)
+    mass = layout.roller_mass
+    return [Mode("pocket film, at its floor", "rollers", -stiffness / mass, -damping / mass)]

@@ -18,8 +18,9 @@ All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` 
   largest inner-raceway force at any instant of the window, impacts included.
 * ``inner_ring_displacement``: magnitude of the mean inner-ring centre position [m] (its components in
   ``inner_ring_offset``).
-* ``max_pocket_force``: the largest roller–pocket force, a pocket pair's (penalty cage) or a constraint's
-  (constraint cage) [N].
+* ``max_pocket_force``: the largest roller–pocket force, a pocket edge pair's (penalty cage; its metal contact,
+  0 while oiled pockets' films hold the rollers off, whose loads are the result's ``pocket_film`` pairs) or a
+  constraint's (constraint cage) [N].
 * ``energy_balance_error``: see :func:`bearing_mbs.analysis.energy_balance_error`.
 * ``max_cage_eccentricity``: the largest distance of the cage centre from the bearing axis [m]; beyond half
   a roller diameter the cage has left its rollers, and ``warnings`` says so.

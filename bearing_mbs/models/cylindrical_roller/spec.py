@@ -371,6 +371,13 @@ class LubricantSpec:
     (:mod:`bearing_mbs.fluid_film`) of the land clearance, as wide as the cage's side rings together
     (cage_width − roller_length), in the oil at ``temperature``; it carries the cage and shears at the cage's speed.
     The dry land contact stays, for metal contact should the film collapse.
+
+    pocket_film (default false): the rollers of the penalty cage run against the oil film of each flat pocket wall
+    (the other cage models have no pocket contacts, as for ``[contact.pocket]``),
+    at the pocket clearance from the centred roller like the edges, over the roller's length
+    (:mod:`bearing_mbs.fluid_film.cylinder_plane`: wedge, squeeze and shear of a cylinder on a plane, fully
+    flooded), in the oil at ``temperature``; it cushions a roller striking a bar. Below three times the pocket's
+    roughness (``contact.pocket.roughness``, Λ = 3) the film is taken at that floor; the dry edge contacts stay.
     """
 
     model: str = "palmgren"
@@ -388,6 +395,7 @@ class LubricantSpec:
     temperature: float | None = None
     oil_fraction: float = 0.05
     land_film: bool = False
+    pocket_film: bool = False
 
     def __post_init__(self):
         one_of("model", self.model, DRAG_MODELS)
@@ -555,6 +563,9 @@ class BearingModelSpec(Spec):
                                 "needs the oil and its operating temperature [°C] in [lubricant]")
         if self.lubricant.land_film:
             self._check_land_film()
+        if self.lubricant.pocket_film:
+            require(self.lubricant.temperature is not None, "lubricant.temperature", None,
+                    "the pocket film (pocket_film = true) needs the oil and its operating temperature [°C]")
         start, end = self.analysis.start, self.scenario.end_time
         if start is not None and not start < end:
             log.warning("analysis.start = %g s is not before scenario.end_time = %g s: the window starts at half the "
