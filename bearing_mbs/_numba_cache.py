@@ -19,7 +19,7 @@ from pathlib import Path
 PACKAGE = Path(__file__).resolve().parent
 STAMP = PACKAGE / "__pycache__" / "numba_sources.sha256"
 #: Globs (relative to the package) of every file whose code numba compiles or whose types it reads.
-COMPILED_SOURCES = ("contact/*.py", "core/*.py", "elements/*.py", "engines/reference/*.py")
+COMPILED_SOURCES = ("contact/*.py", "core/*.py", "elements/*.py", "engines/reference/*.py", "fluid_film/*.py")
 
 
 def sources_digest() -> str:
