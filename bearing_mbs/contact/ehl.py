@@ -141,6 +141,33 @@ def thermal_reduction(loading):
 
 
 @register_jitable
+def thermal_reduction_slope(loading):
+    r""":math:`\mathrm d\ln\phi_T/\mathrm d\ln L = -0.62\,L^{0.62}/(3.94 + L^{0.62})` of :func:`thermal_reduction`."""
+    a, e = _MURCH_WILSON
+    return -e * loading**e / (a + loading**e)
+
+
+@register_jitable
+def film_thickness_exponents(formula):
+    """(central's, minimum's) exponents of the speed u and of the load w in :func:`film_thickness`: the slopes
+    d ln h/d ln u and d ln h/d ln w of the formula with code ``formula``, as ((u, w), (u, w))."""
+    table = _PAN_HAMROCK if formula == _PAN_HAMROCK_CODE else _DOWSON_HIGGINSON
+    return (table[0][1], table[0][3]), (table[1][1], table[1][3])
+
+
+@register_jitable
+def rolling_force_exponents(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length):
+    """d ln F_R/d ln u and d ln F_R/d ln w of :func:`rolling_force`: Zhou–Hoeprich's 0.658 and 0.0126 where it
+    is the smaller, the rigid regime's 1/2 and 1/2 elsewhere."""
+    c, e_gu, e_w = _ZHOU_HOEPRICH
+    u_group = viscosity * speed / (modulus * radius)
+    w_group = load_per_length / (modulus * radius)
+    elastic = c / pressure_viscosity * (pressure_viscosity * modulus * u_group) ** e_gu * w_group**e_w * radius * length
+    rigid = _RIGID_ROLLING * np.sqrt(viscosity * speed * load_per_length) * length
+    return (e_gu, e_w) if elastic < rigid else (0.5, 0.5)
+
+
+@register_jitable
 def film_parameter(minimum_film, roughness):
     r"""Λ = h_min/σ [-], σ [m] the composite rms roughness of the two surfaces."""
     return minimum_film / roughness

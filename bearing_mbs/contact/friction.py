@@ -74,6 +74,24 @@ def dead_zone_sign(slip, regularisation_speed):
     return np.sign(slip) * (np.abs(slip) >= regularisation_speed)
 
 
+@register_jitable
+def erf_sign_slope(slip, regularisation_speed):
+    r""":math:`\varphi'(v) = (4/\sqrt\pi)\,e^{-(2v/v_{reg})^2}/v_{reg}` [s/m] of :func:`erf_sign`."""
+    return 4.0 / math.sqrt(math.pi) * np.exp(-((2.0 * slip / regularisation_speed) ** 2)) / regularisation_speed
+
+
+@register_jitable
+def tanh_sign_slope(slip, regularisation_speed):
+    r""":math:`\varphi'(v) = 2(1 - \tanh^2(2v/v_{reg}))/v_{reg}` [s/m] of :func:`tanh_sign`."""
+    return 2.0 * (1.0 - np.tanh(2.0 * slip / regularisation_speed) ** 2) / regularisation_speed
+
+
+@register_jitable
+def linear_sign_slope(slip, regularisation_speed):
+    r""":math:`\varphi'(v) = 1/v_{reg}` inside the saturation, 0 beyond [s/m], of :func:`linear_sign`."""
+    return (np.abs(slip) < regularisation_speed) / regularisation_speed
+
+
 #: Law name → regularised sign function φ(v, v_reg).
 FRICTION_SIGN = {
     "none": no_friction,

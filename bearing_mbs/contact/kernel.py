@@ -40,6 +40,18 @@ def regularised_sign(law, speed, regularisation_speed):
     return 0.0  # "none"
 
 
+@numba.njit(cache=True)
+def regularised_sign_slope(law, speed, regularisation_speed):
+    """dφ/dv [s/m] of :func:`regularised_sign` (0 for ``none`` and, almost everywhere, the dead zone)."""
+    if law == _ERF or law == _EHL:
+        return friction.erf_sign_slope(speed, regularisation_speed)
+    if law == _TANH:
+        return friction.tanh_sign_slope(speed, regularisation_speed)
+    if law == _LINEAR:
+        return friction.linear_sign_slope(speed, regularisation_speed)
+    return 0.0  # "none" and "dead_zone"
+
+
 @numba.njit(cache=True, inline="always")
 def tangential_force(law, normal_force, coefficient, slip, rolling, regularisation_speed, traction_row):
     """Friction force on body b [N] (along the tangent) of a pair in contact: μ F_N φ(v) for the Coulomb laws,

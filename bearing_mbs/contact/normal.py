@@ -91,6 +91,22 @@ def hysteresis_factor(gap_rate, damping_factor, approach_speed):
 
 
 @register_jitable
+def hysteresis_force_slopes(gap, gap_rate, stiffness, exponent, damping_factor, latched, floor):
+    r"""(∂F_N/∂g, ∂F_N/∂ġ) of :func:`hysteresis_force` at a penetrating gap (g < 0), with the pair's latched
+    approach speed held (:func:`reference_approach_speed`): :math:`-nK\delta^{n-1}(1 - d\dot g/\dot\delta^-)` and
+    :math:`-K\delta^n d/\dot\delta^-`; the second is 0 while the approach is not latched and faster than the floor
+    (then :math:`\dot\delta^- = -\dot g` and the factor is 1 + d). Both 0 where the force is 0."""
+    approach = reference_approach_speed(latched, gap_rate, floor)
+    factor = hysteresis_factor(gap_rate, damping_factor, approach)
+    depth = penetration(gap)
+    if depth <= 0.0 or factor <= 0.0:
+        return 0.0, 0.0
+    elastic = stiffness * depth**exponent
+    rate_slope = 0.0 if (latched <= 0.0 and -gap_rate > floor) else -elastic * damping_factor / approach
+    return -exponent * stiffness * depth ** (exponent - 1.0) * factor, rate_slope
+
+
+@register_jitable
 def elastic_force(gap, stiffness, exponent):
     r"""Conservative part :math:`K\delta^n` [N] (the power law :math:`F = K\delta^n`)."""
     return stiffness * penetration(gap) ** exponent

@@ -185,3 +185,121 @@ def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisa
     ahead = ehl_traction(row, step, rolling, normal_force, boundary_coefficient, regularisation_speed)[0]
     behind = ehl_traction(row, -step, rolling, normal_force, boundary_coefficient, regularisation_speed)[0]
     return (ahead - behind) / (2 * step)
+
+
+@register_jitable
+def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
+                           eyring_stress, shear_modulus, limiting_shear):
+    r"""Derivatives of :func:`eyring_traction`: (∂μ_f/∂Δu [s/m], ∂μ_f/∂ln u, ∂μ_f/∂ln h, ∂μ_f/∂ln p̄, ∂μ_f/∂ln b).
+    With V the Eyring stress, E the elastic one and S = VE/(V + E): :math:`\mu_f = \mathrm{sign}(\Delta u)\Lambda_L
+    \tanh(S/\Lambda_L\bar p)`, V a function of :math:`\ln x = \ln(\eta_0|\Delta u|/h\tau_0) + \alpha\bar p`, E of
+    :math:`|\Delta u| b/(u h)`; at zero slip S grows as :math:`|\Delta u|\,v_1e_1/(v_1 + e_1)`."""
+    magnitude = abs(slip)
+    log_a = math.log(viscosity / (film * eyring_stress)) + pressure_viscosity * mean_pressure  # x = a |Δu|
+    viscous = viscous_log = viscous_magnitude = 0.0
+    if magnitude > 0.0:
+        log_x = log_a + math.log(magnitude)
+        if log_x > 20.0:
+            viscous = eyring_stress * (log_x + math.log(2.0))
+            viscous_log, viscous_magnitude = eyring_stress, eyring_stress / magnitude
+        else:
+            x = math.exp(log_x)
+            viscous = eyring_stress * math.asinh(x)
+            viscous_log = eyring_stress * x / math.sqrt(1.0 + x * x)
+            viscous_magnitude = eyring_stress * math.exp(log_a) / math.sqrt(1.0 + x * x)
+    else:
+        viscous_magnitude = eyring_stress * math.exp(log_a)
+    elastic_magnitude = shear_modulus * half_width / (speed * film)
+    elastic = elastic_magnitude * magnitude
+    total = viscous + elastic
+    if total > 0.0:
+        series = viscous * elastic / total
+        series_v, series_e = (elastic / total) ** 2, (viscous / total) ** 2
+        series_magnitude = series_v * viscous_magnitude + series_e * elastic_magnitude
+    else:
+        series = series_v = series_e = 0.0
+        series_magnitude = viscous_magnitude * elastic_magnitude / (viscous_magnitude + elastic_magnitude)
+    limit = limiting_shear * mean_pressure
+    y = series / limit
+    sech2 = 1.0 - math.tanh(y) ** 2
+    sign = math.copysign(1.0, slip)
+    per_series = sign * sech2 / mean_pressure
+    return (sech2 / mean_pressure * series_magnitude,
+            per_series * series_e * (-elastic),
+            per_series * (series_v * (-viscous_log) + series_e * (-elastic)),
+            per_series * series_v * viscous_log * pressure_viscosity * mean_pressure
+            - sign * limiting_shear * sech2 * y,
+            per_series * series_e * elastic)
+
+
+@register_jitable
+def ehl_traction_slopes(row, slip, rolling, normal_force, boundary_coefficient, regularisation_speed):
+    """(∂μ/∂Δu [s/m], ∂μ/∂u [s/m], ∂μ/∂Q [1/N]) of :func:`ehl_traction` (Q > 0): the film's and Λ's power laws in
+    the speed and load (:func:`.ehl.film_thickness_exponents`, the inlet heating's log slope), the blend by ψ(Λ),
+    and the film-shear model's slopes. The entrainment speed is floored at v_reg, where ∂μ/∂u is 0."""
+    speed = max(abs(rolling), regularisation_speed)
+    speed_rolling = math.copysign(1.0, rolling) if abs(rolling) > regularisation_speed else 0.0
+    length, radius, modulus = row[_LENGTH], row[_RADIUS], row[_MODULUS]
+    viscosity, pressure_viscosity, roughness = row[_VISCOSITY], row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
+    load = normal_force / length
+    formula = int(row[_FORMULA])
+    central, minimum = ehl.film_thickness(formula, speed, load, viscosity, pressure_viscosity, modulus, radius)
+    (central_u, central_w), (minimum_u, minimum_w) = ehl.film_thickness_exponents(formula)
+    thermal = 0.0  # d ln φ_T / d ln u
+    if row[_THERMAL] > 0.0:
+        loading = ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY], row[_CONDUCTIVITY])
+        reduction = ehl.thermal_reduction(loading)
+        central *= reduction
+        minimum *= reduction
+        thermal = 2.0 * ehl.thermal_reduction_slope(loading)
+    film_parameter = ehl.film_parameter(minimum, roughness)
+    share = asperity_share(film_parameter)
+    share_log = -1.8 * 1.2 * film_parameter**1.2 * share  # dψ/d ln Λ
+    share_speed, share_load = share_log * (minimum_u + thermal), share_log * minimum_w  # over ln u, ln Q
+    boundary = boundary_coefficient * friction.erf_sign(slip, regularisation_speed)
+    boundary_slip = boundary_coefficient * friction.erf_sign_slope(slip, regularisation_speed)
+    if row[_MODEL] == _EYRING:
+        mean_pressure = 0.25 * np.pi * ehl.hertz_pressure(load, radius, modulus)
+        half_width = ehl.hertz_half_width(load, radius, modulus)
+        film = max(central, roughness)
+        floored = central <= roughness
+        film_speed = 0.0 if floored else central_u + thermal
+        film_load = 0.0 if floored else central_w
+        fluid = eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
+                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
+        fluid_slip, by_speed, by_film, by_pressure, by_width = eyring_traction_slopes(
+            slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity, row[_EYRING_STRESS],
+            row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
+        fluid_speed = by_speed + by_film * film_speed  # over ln u
+        fluid_load = by_film * film_load + 0.5 * (by_pressure + by_width)  # over ln Q: p̄ and b grow as Q^(1/2)
+    else:
+        ratio = slip / speed
+        a, b, c = row[_CURVE_A], row[_CURVE_B], row[_CURVE_C]
+        fluid = curve_traction(ratio, a, b, c, row[_CURVE_D])
+        curve_slope = (b - c * (a + b * abs(ratio))) * math.exp(-c * abs(ratio))
+        fluid_slip, fluid_speed, fluid_load = curve_slope / speed, -curve_slope * ratio, 0.0
+    return (share * boundary_slip + (1.0 - share) * fluid_slip,
+            (share_speed * (boundary - fluid) + (1.0 - share) * fluid_speed) / speed * speed_rolling,
+            (share_load * (boundary - fluid) + (1.0 - share) * fluid_load) / normal_force)
+
+
+@register_jitable
+def signed_rolling_force_slopes(row, rolling, normal_force, regularisation_speed):
+    """(f, ∂f/∂u, ∂f/∂Q) of the signed rolling force f = F_R erf(2u/v_reg) (:func:`rolling_force`,
+    :func:`rolling_resistance`): F_R is a power law in u and Q (:func:`.ehl.rolling_force_exponents`, the inlet
+    heating's log slope); at u = 0 both slopes vanish with F_R."""
+    force = rolling_force(row, rolling, normal_force)
+    if force <= 0.0:
+        return 0.0, 0.0, 0.0
+    speed, viscosity, length = abs(rolling), row[_VISCOSITY], row[_LENGTH]
+    exponent_u, exponent_w = ehl.rolling_force_exponents(speed, normal_force / length, viscosity,
+                                                         row[_PRESSURE_VISCOSITY], row[_MODULUS], row[_RADIUS],
+                                                         length)
+    if row[_THERMAL] > 0.0:
+        exponent_u += 2.0 * ehl.thermal_reduction_slope(ehl.thermal_loading(speed, viscosity,
+                                                                             row[_TEMPERATURE_VISCOSITY],
+                                                                             row[_CONDUCTIVITY]))
+    sign = friction.erf_sign(rolling, regularisation_speed)
+    signed = force * sign
+    by_rolling = force * exponent_u * sign / rolling + force * friction.erf_sign_slope(rolling, regularisation_speed)
+    return signed, by_rolling, signed * exponent_w / normal_force

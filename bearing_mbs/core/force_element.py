@@ -22,6 +22,16 @@ The compiled function is inlined into the integrators, so its arguments must car
 every local variable must be assigned on every path before it is read (numba's inliner refuses a variable
 that may be undefined).
 
+A kind may also give its forces' derivatives, for implicit integrators (compiled, same conventions)::
+
+    add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity) -> None
+
+* ``force_position`` (3N, 3N) ∂F/∂q and ``force_velocity`` (3N, 3N) ∂F/∂v, to be **added to**, at (t, q, v)
+  with the per-pair state ``latched`` held fixed (as a Newton iteration of an implicit step holds it);
+* ``pair_out`` — the pair outputs that ``add_forces`` wrote at the same (t, q, v), complete (read only).
+
+A kind without one is differentiated numerically by the engines.
+
 Body index −1 is the ground. All quantities are SI.
 """
 
@@ -53,7 +63,8 @@ class ForceElement:
     * ``add_forces`` — the compiled (numba ``njit``) evaluation, contract in the module docstring;
     * ``add_forces_twin`` — its readable numpy twin, same contract, held to the compiled one by the tests;
     * ``potential_energy(parameters, position, pair_output) -> (T,) array | None`` — the energy the kind
-      stores [J] at each output instant, from the result's positions (T, 3N) and pair outputs (T, P, k).
+      stores [J] at each output instant, from the result's positions (T, 3N) and pair outputs (T, P, k);
+    * ``add_jacobian`` — the compiled derivatives of its forces (module docstring), or None.
     """
 
     name: str
@@ -63,6 +74,7 @@ class ForceElement:
     add_forces: Callable
     add_forces_twin: Callable
     potential_energy: Callable = no_potential_energy
+    add_jacobian: Callable | None = None
 
 
 class ForceElementRegistry(Registry[ForceElement]):

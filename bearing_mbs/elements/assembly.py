@@ -18,7 +18,7 @@ from numba.extending import overload
 from bearing_mbs.core.scene import CONSTRAINT_KINDS, Scene
 from bearing_mbs.elements import contact_pairs
 from bearing_mbs.elements.contact_pairs import PairArrays
-from bearing_mbs.elements.registry import BUILT_IN, FORCE_ELEMENTS, add_built_in_forces
+from bearing_mbs.elements.registry import BUILT_IN, FORCE_ELEMENTS, add_built_in_forces, add_built_in_jacobians
 
 #: The built-in kinds lead the tuple of packed kinds; kinds registered from outside follow.
 BUILT_IN_COUNT = len(BUILT_IN)
@@ -149,6 +149,22 @@ def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
 def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
     """:func:`element_forces` of a packed scene."""
     return element_forces(packed.elements, t, q, v, latched, forces, pair_out, complete)
+
+
+def has_analytic_jacobian(scene: Scene) -> bool:
+    """Whether every force item of ``scene`` is of a kind with an analytic Jacobian that :func:`element_jacobian`
+    assembles (the built-in kinds; a kind registered from outside is differentiated numerically)."""
+    return all(FORCE_ELEMENTS.of_item(item) in BUILT_IN for item in scene.forces)
+
+
+@numba.njit(cache=True)
+def element_jacobian(elements, t, q, v, latched, pair_out, force_position, force_velocity):
+    """∂F/∂q and ∂F/∂v (3N × 3N each, overwritten) of the built-in kinds of ``elements`` at (t, q, v), with
+    ``pair_out`` the pair outputs :func:`element_forces` wrote there (complete) and the latched approach speeds
+    held. For scenes with :func:`has_analytic_jacobian`."""
+    force_position[:, :] = 0.0
+    force_velocity[:, :] = 0.0
+    add_built_in_jacobians(elements, t, q, v, latched, pair_out, force_position, force_velocity)
 
 
 def element_forces_twin(elements, t, q, v, latched, forces, pair_out, complete=True):

@@ -67,5 +67,22 @@ def add_forces_twin(drags, t, q, v, latched, forces, pair_out, power, complete):
         power[1] += coefficients @ velocities[body] ** 2
 
 
+@numba.njit(cache=True, inline="always")
+def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+    """∂F/∂v of each drag: −(c + c_2|v|) I − c_2 v vᵀ/|v| on the centre (−c I at rest, where the quadratic term's
+    derivative vanishes) and −(c_θ + 2c_θ2|ω|) on the spin; no dependence on q."""
+    drags = parameters
+    for j in range(drags.body.size):
+        i = 3 * drags.body[j]
+        speed = np.sqrt(v[i] ** 2 + v[i + 1] ** 2)
+        resistance = drags.linear[j] + drags.quadratic[j] * speed
+        for r in range(2):
+            force_velocity[i + r, i + r] -= resistance
+            if speed > 0.0:
+                for c in range(2):
+                    force_velocity[i + r, i + c] -= drags.quadratic[j] * v[i + r] * v[i + c] / speed
+        force_velocity[i + 2, i + 2] -= drags.angular[j] + 2.0 * drags.angular_quadratic[j] * abs(v[i + 2])
+
+
 ELEMENT = ForceElement(name="drags", item_type=Drag, parameters=DragArrays, pack=pack, add_forces=add_forces,
-                       add_forces_twin=add_forces_twin)
+                       add_forces_twin=add_forces_twin, add_jacobian=add_jacobian)

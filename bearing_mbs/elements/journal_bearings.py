@@ -25,8 +25,8 @@ import numba
 import numpy as np
 
 from bearing_mbs.core.force_element import ForceElement
-from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
-from bearing_mbs.fluid_film.force_map import map_force
+from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_force_jacobian, short_bearing_torque
+from bearing_mbs.fluid_film.force_map import map_force, map_force_jacobian
 
 #: Force sources by their integer code.
 SOURCES = ("short", "map")
@@ -138,5 +138,47 @@ def add_forces_twin(films, t, q, v, latched, forces, pair_out, power, complete):
         power[1] -= load @ v[3 * body : 3 * body + 3]
 
 
+@numba.njit(cache=True)
+def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+    """∂F/∂q and ∂F/∂v of each film: its force's slopes in (e_x, e_y, v_x, v_y, Ω)
+    (:func:`~bearing_mbs.fluid_film.closed_forms.short_bearing_force_jacobian`,
+    :func:`~bearing_mbs.fluid_film.force_map.map_force_jacobian`) and its Couette torque's in ε and Ω; beyond
+    :data:`LARGEST_ECCENTRICITY` the eccentricity is held there, so only its direction moves the force."""
+    films = parameters
+    for j in range(films.body.size):
+        i = 3 * films.body[j]
+        radius, length, clearance, viscosity = films.geometry[j, 0], films.geometry[j, 1], films.geometry[j, 2], \
+            films.geometry[j, 3]
+        e_x, e_y = q[i] - films.centre[j, 0], q[i + 1] - films.centre[j, 1]
+        e = math.sqrt(e_x * e_x + e_y * e_y)
+        eps = e / clearance
+        # ∂(evaluated e)/∂e: the identity, or the projection on the direction's change when held at the largest ε
+        held = np.eye(2)
+        if eps > LARGEST_ECCENTRICITY:
+            n_x, n_y = e_x / e, e_y / e
+            held = LARGEST_ECCENTRICITY / eps * np.array([[n_y * n_y, -n_x * n_y], [-n_x * n_y, n_x * n_x]])
+            e_x, e_y, eps = e_x * LARGEST_ECCENTRICITY / eps, e_y * LARGEST_ECCENTRICITY / eps, LARGEST_ECCENTRICITY
+        speed = v[i + 2]
+        if films.source[j] == 0:
+            slopes = short_bearing_force_jacobian(e_x, e_y, v[i], v[i + 1], speed, radius, length, clearance,
+                                                  viscosity)
+        else:
+            rows, columns = films.map_shape[j, 0], films.map_shape[j, 1]
+            slopes = map_force_jacobian(films.map_normal[j, :rows, :columns], films.map_tangential[j, :rows, :columns],
+                                        films.map_step[j], e_x, e_y, v[i], v[i + 1], speed, clearance)
+        count = films.count[j]
+        for r in range(2):
+            for c in range(2):
+                force_position[i + r, i + c] += count * (slopes[r, 0] * held[0, c] + slopes[r, 1] * held[1, c])
+                force_velocity[i + r, i + c] += count * slopes[r, 2 + c]
+            force_velocity[i + r, i + 2] += count * slopes[r, 4]
+        torque = short_bearing_torque(eps, speed, radius, length, clearance, viscosity)
+        force_velocity[i + 2, i + 2] += count * short_bearing_torque(eps, 1.0, radius, length, clearance, viscosity)
+        if e > 0.0 and eps < LARGEST_ECCENTRICITY:
+            by_eps = torque * eps / (1.0 - eps * eps)
+            force_position[i + 2, i] += count * by_eps * e_x / (e * clearance)
+            force_position[i + 2, i + 1] += count * by_eps * e_y / (e * clearance)
+
+
 ELEMENT = ForceElement(name="journal_bearings", item_type=JournalFilm, parameters=JournalFilmArrays, pack=pack,
-                       add_forces=add_forces, add_forces_twin=add_forces_twin)
+                       add_forces=add_forces, add_forces_twin=add_forces_twin, add_jacobian=add_jacobian)

@@ -58,5 +58,11 @@ def add_forces_twin(loads, t, q, v, latched, forces, pair_out, power, complete):
         power[0] += scale * loads.vector[j] @ velocities[body]
 
 
+@numba.njit(cache=True, inline="always")
+def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+    """Nothing: a profile load depends on time alone."""
+    pass
+
+
 ELEMENT = ForceElement(name="loads", item_type=Load, parameters=LoadArrays, pack=pack, add_forces=add_forces,
-                       add_forces_twin=add_forces_twin)
+                       add_forces_twin=add_forces_twin, add_jacobian=add_jacobian)

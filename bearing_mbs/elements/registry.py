@@ -31,3 +31,16 @@ def add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, com
     slewing_bearings.add_forces(elements[4], t, q, v, latched, forces, pair_out, power, complete)
     journal_bearings.add_forces(elements[5], t, q, v, latched, forces, pair_out, power, complete)
     unbalances.add_forces(elements[6], t, q, v, latched, forces, pair_out, power, complete)
+
+
+@numba.njit(cache=True)
+def add_built_in_jacobians(elements, t, q, v, latched, pair_out, force_position, force_velocity):
+    """The analytic Jacobians of the built-in kinds, ``elements[0:7]`` in the order of :data:`BUILT_IN`
+    (``ForceElement.add_jacobian``)."""
+    contact_pairs.add_jacobian(elements[0], t, q, v, latched, pair_out, force_position, force_velocity)
+    loads.add_jacobian(elements[1], t, q, v, latched, pair_out, force_position, force_velocity)
+    servos.add_jacobian(elements[2], t, q, v, latched, pair_out, force_position, force_velocity)
+    drags.add_jacobian(elements[3], t, q, v, latched, pair_out, force_position, force_velocity)
+    slewing_bearings.add_jacobian(elements[4], t, q, v, latched, pair_out, force_position, force_velocity)
+    journal_bearings.add_jacobian(elements[5], t, q, v, latched, pair_out, force_position, force_velocity)
+    unbalances.add_jacobian(elements[6], t, q, v, latched, pair_out, force_position, force_velocity)

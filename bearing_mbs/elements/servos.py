@@ -60,5 +60,14 @@ def add_forces_twin(servos, t, q, v, latched, forces, pair_out, power, complete)
         power[0] += torque * velocities[body, 2]
 
 
+@numba.njit(cache=True, inline="always")
+def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+    """∂T/∂ω = −gain on each driven body's spin."""
+    servos = parameters
+    for j in range(servos.body.size):
+        i = 3 * servos.body[j] + 2
+        force_velocity[i, i] -= servos.gain[j]
+
+
 ELEMENT = ForceElement(name="drives", item_type=VelocityServo, parameters=ServoArrays, pack=pack,
-                       add_forces=add_forces, add_forces_twin=add_forces_twin)
+                       add_forces=add_forces, add_forces_twin=add_forces_twin, add_jacobian=add_jacobian)

@@ -174,6 +174,56 @@ def potential_energy(joints, position, pair_output):
     return energy
 
 
+@numba.njit(cache=True)
+def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+    r"""With the body's force :math:`-(f + \beta K_t \dot x)`, f = Σ Bᵀ Q ŝ and :math:`K_t = \partial f/\partial x`:
+    ∂F/∂v = −β K_t and ∂F/∂q = −K_t − β ∂(K_t ẋ)/∂x. Per diagonal the Hessian of its potential is
+    :math:`H = a\,ŝŝ^T + b\,I` with a = Q′ − Q/|s|, b = Q/|s| (Q = Kδ^{3/2}, Q′ = 1.5Kδ^{1/2}), whose derivative
+    along the separation's rate w = B ẋ is
+    :math:`a'(ŝ\cdot w)ŝ\,ŝ^T + a[(ŝ\cdot w)(I - ŝŝ^T) + ŝ(w - (ŝ\cdot w)ŝ)^T]/|s| + b'\,w\,ŝ^T`
+    (a′ = Q″ − Q′/|s| + Q/|s|², b′ = Q′/|s| − Q/|s|², Q″ = 0.75Kδ^{−1/2})."""
+    joints = parameters
+    for j in range(joints.body.size):
+        i = 3 * joints.body[j]
+        displacement = q[i:i + 3] - joints.reference[j]
+        a0, k, r = joints.centre_distance[j], joints.stiffness[j], joints.pitch_radius[j]
+        alpha, beta, balls = joints.contact_angle[j], joints.damping[j], joints.balls[j]
+        rate = v[i:i + 3]
+        tangent = np.zeros((3, 3))
+        rate_term = np.zeros((3, 3))
+        for n in range(balls):
+            c = math.cos(2.0 * math.pi * n / balls)
+            b_matrix = np.array([[c, 0.0, 0.0], [0.0, 1.0, r * c]])
+            for d in (1.0, -1.0):
+                s_r = a0 * math.cos(alpha) + displacement[0] * c
+                s_z = d * a0 * math.sin(alpha) + displacement[1] + displacement[2] * r * c
+                length = math.sqrt(s_r * s_r + s_z * s_z)
+                approach = length - a0
+                if approach <= 0.0:
+                    continue
+                load = k * approach**1.5
+                slope = 1.5 * k * math.sqrt(approach)
+                curvature = 0.75 * k / math.sqrt(approach)
+                unit = np.array([s_r / length, s_z / length])
+                outer = np.outer(unit, unit)
+                a_coef, b_coef = slope - load / length, load / length
+                hessian = a_coef * outer + b_coef * np.eye(2)
+                tangent += b_matrix.T @ hessian @ b_matrix
+                if beta > 0.0:
+                    w = b_matrix @ rate
+                    along = unit @ w
+                    a_slope = curvature - slope / length + load / length**2
+                    b_slope = slope / length - load / length**2
+                    change = (a_slope * along * outer
+                              + a_coef * (along * (np.eye(2) - outer) + np.outer(unit, w - along * unit)) / length
+                              + b_slope * np.outer(w, unit))
+                    rate_term += b_matrix.T @ change @ b_matrix
+        for row in range(3):
+            for column in range(3):
+                force_position[i + row, i + column] -= tangent[row, column] + beta * rate_term[row, column]
+                force_velocity[i + row, i + column] -= beta * tangent[row, column]
+
+
 ELEMENT = ForceElement(name="slewing_bearings", item_type=SlewingBearingJoint, parameters=SlewingBearingArrays,
                        pack=pack, add_forces=add_forces, add_forces_twin=add_forces_twin,
-                       potential_energy=potential_energy)
+                       potential_energy=potential_energy, add_jacobian=add_jacobian)

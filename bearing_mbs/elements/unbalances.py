@@ -61,5 +61,21 @@ def add_forces_twin(unbalances, t, q, v, latched, forces, pair_out, power, compl
         power[0] += force @ v[3 * body : 3 * body + 2]
 
 
+@numba.njit(cache=True, inline="always")
+def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+    """The rotating force m e ω² (cos, sin)(θ + φ): ∂/∂θ turns it a quarter turn, ∂/∂ω is 2/ω of it."""
+    unbalances = parameters
+    for j in range(unbalances.body.size):
+        i = 3 * unbalances.body[j]
+        angle = q[i + 2] + unbalances.phase[j]
+        spin = v[i + 2]
+        cos_angle, sin_angle = math.cos(angle), math.sin(angle)
+        magnitude = unbalances.moment[j] * spin**2
+        force_position[i, i + 2] -= magnitude * sin_angle
+        force_position[i + 1, i + 2] += magnitude * cos_angle
+        force_velocity[i, i + 2] += 2.0 * unbalances.moment[j] * spin * cos_angle
+        force_velocity[i + 1, i + 2] += 2.0 * unbalances.moment[j] * spin * sin_angle
+
+
 ELEMENT = ForceElement(name="unbalances", item_type=Unbalance, parameters=UnbalanceArrays, pack=pack,
-                       add_forces=add_forces, add_forces_twin=add_forces_twin)
+                       add_forces=add_forces, add_forces_twin=add_forces_twin, add_jacobian=add_jacobian)

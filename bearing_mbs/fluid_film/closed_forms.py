@@ -104,3 +104,66 @@ def short_bearing_torque(eccentricity_ratio, speed, radius, length, clearance, v
     r"""Viscous torque [N m] on the journal about its axis (opposing Ω): the Couette shear μΩR/h over the full
     film, :math:`-2\pi\mu\Omega R^3 L/(C\sqrt{1-\varepsilon^2})` (Petroff's at ε = 0)."""
     return -2.0 * math.pi * viscosity * speed * radius**3 * length / (clearance * math.sqrt(1.0 - eccentricity_ratio**2))
+
+
+@register_jitable
+def journal_motion_slopes(e_x, e_y, v_x, v_y, speed, clearance):
+    """The journal's line of centres n, ε, and the squeeze and swirl terms ε̇ and ε(Ω − 2ψ̇) of the film forces,
+    with their derivatives over (e_x, e_y, v_x, v_y, Ω): (n_x, n_y, ε, ε̇, ε(Ω − 2ψ̇), ∂n_x, ∂n_y, ∂ε, ∂ε̇,
+    ∂[ε(Ω − 2ψ̇)]); e > 0."""
+    e = math.sqrt(e_x * e_x + e_y * e_y)
+    n_x, n_y = e_x / e, e_y / e
+    eps = e / clearance
+    eps_rate = (v_x * n_x + v_y * n_y) / clearance
+    psi_rate = (v_y * n_x - v_x * n_y) / e
+    nx_d = np.array([n_y * n_y / e, -n_x * n_y / e, 0.0, 0.0, 0.0])
+    ny_d = np.array([-n_x * n_y / e, n_x * n_x / e, 0.0, 0.0, 0.0])
+    eps_d = np.array([n_x / clearance, n_y / clearance, 0.0, 0.0, 0.0])
+    eps_rate_d = (v_x * nx_d + v_y * ny_d) / clearance
+    eps_rate_d[2], eps_rate_d[3] = n_x / clearance, n_y / clearance
+    psi_rate_d = (v_y * nx_d - v_x * ny_d) / e - psi_rate * np.array([n_x, n_y, 0.0, 0.0, 0.0]) / e
+    psi_rate_d[2], psi_rate_d[3] = -n_y / e, n_x / e
+    swirl = eps * (speed - 2.0 * psi_rate)
+    swirl_d = eps_d * (speed - 2.0 * psi_rate) - 2.0 * eps * psi_rate_d
+    swirl_d[4] += eps
+    return n_x, n_y, eps, eps_rate, swirl, nx_d, ny_d, eps_d, eps_rate_d, swirl_d
+
+
+@register_jitable
+def short_bearing_force_jacobian(e_x, e_y, v_x, v_y, speed, radius, length, clearance, viscosity):
+    """∂(F_x, F_y)/∂(e_x, e_y, v_x, v_y, Ω) of :func:`short_bearing_force` (a 2 × 5 array), differentiating its
+    quadrature term by term: the bracket's coefficients a = 2ε̇ and b = ε(Ω − 2ψ̇), the denominator's ε and the
+    nodes, which move with the positive half-turn's start −β = −atan2(b, a)."""
+    jacobian = np.zeros((2, 5))
+    if math.sqrt(e_x * e_x + e_y * e_y) < 1e-12 * clearance:
+        return jacobian
+    n_x, n_y, eps, eps_rate, b_coef, nx_d, ny_d, eps_d, eps_rate_d, b_d = journal_motion_slopes(
+        e_x, e_y, v_x, v_y, speed, clearance)
+    a_coef, a_d = 2.0 * eps_rate, 2.0 * eps_rate_d
+    magnitude2 = a_coef * a_coef + b_coef * b_coef
+    beta = math.atan2(b_coef, a_coef)
+    beta_d = (a_coef * b_d - b_coef * a_d) / magnitude2 if magnitude2 > 0.0 else np.zeros(5)
+    f_n = f_t = 0.0
+    f_n_d, f_t_d = np.zeros(5), np.zeros(5)
+    for k in range(_NODES.size):
+        alpha = -beta + _NODES[k] * math.pi / 2
+        cos_a, sin_a = math.cos(alpha), math.sin(alpha)
+        bracket = a_coef * cos_a - b_coef * sin_a
+        if bracket <= 0.0:
+            continue
+        denominator = 1.0 - eps * cos_a
+        profile = _WEIGHTS[k] * bracket / denominator**3
+        # over the bracket, the denominator and the node's angle (which moves as −β)
+        by_alpha = _WEIGHTS[k] * ((-a_coef * sin_a - b_coef * cos_a) / denominator**3
+                                  - 3.0 * bracket * eps * sin_a / denominator**4)
+        profile_d = (_WEIGHTS[k] * (cos_a * a_d - sin_a * b_d) / denominator**3
+                     + _WEIGHTS[k] * 3.0 * bracket * cos_a / denominator**4 * eps_d - by_alpha * beta_d)
+        f_n += profile * cos_a
+        f_t += profile * sin_a
+        f_n_d += profile_d * cos_a + profile * sin_a * beta_d  # d cos α = −sin α dα, dα = −dβ
+        f_t_d += profile_d * sin_a - profile * cos_a * beta_d
+    scale = -viscosity * radius * length**3 / (2.0 * clearance**2) * (math.pi / 2)
+    f_n, f_t, f_n_d, f_t_d = scale * f_n, scale * f_t, scale * f_n_d, scale * f_t_d
+    jacobian[0] = f_n_d * n_x + f_n * nx_d - f_t_d * n_y - f_t * ny_d
+    jacobian[1] = f_n_d * n_y + f_n * ny_d + f_t_d * n_x + f_t * nx_d
+    return jacobian

@@ -12,8 +12,9 @@ far upstream) integrates once to
 With :math:`x = a\xi`, :math:`a = (2Rh_0)^{1/2}`, :math:`\xi = \tan\varphi`, every integral of the pressure is
 elementary in φ; the outlet :math:`\varphi_c` is the root of :math:`p(x_c) = 0`, which depends only on the
 direction :math:`\chi = \mathrm{atan2}(\dot h_0 a/h_0,\,|u|)` of the motion (:data:`OUTLET`, tabulated once by
-bisection). The film's load on the cylinder, its Poiseuille (pressure-flow) shear summed over both surfaces
-:math:`f_P = \int h p'\,\mathrm dx`, and the limits our integration reproduces:
+bisection, refined by Newton's method where it is used). The film's load on the cylinder, its Poiseuille
+(pressure-flow) shear summed over both surfaces :math:`f_P = \int h p'\,\mathrm dx`, and the limits our
+integration reproduces:
 
 * pure rolling (:math:`\dot h_0 = 0`): :math:`\xi_c = 0.4751`, :math:`W = 4.895\,\eta u R l/h_0`,
   :math:`f_P = 12 \times 0.5422\,\eta u l\,(2R/h_0)^{1/2}` (H. M. Martin, "Lubrication of gear teeth",
@@ -86,6 +87,42 @@ DIRECTION, OUTLET = _outlet_table()
 
 
 @register_jitable
+def _outlet_terms(phi, chi):
+    """(C, C_φ, C_χ) of the outlet condition at (φ, χ); scalars or arrays."""
+    j0, j1, j2, _, _, _, _ = _integrals(phi)
+    s, c = np.sin(phi), np.cos(phi)
+    along, across = np.cos(chi), np.sin(chi)
+    first, second = j2 * c * c - s * s * j0, j1 * c * c - s * c * j0
+    by_phi = -2.0 * s * c * (j2 + j0) * along - (2.0 * s * c * j1 + (c * c - s * s) * j0) * across
+    return along * first + across * second, by_phi, -across * first + along * second
+
+
+@register_jitable
+def _outlet_angle(chi):
+    """φ_c at χ: the table's value refined by four Newton steps on the outlet condition (to rounding; scalars or
+    arrays); at the table's ends, where the condition's slope vanishes (no pressure zone) or φ_c = π/2 (no
+    cavitation), the table's value stands."""
+    phi = np.interp(chi, DIRECTION, OUTLET)
+    for _ in range(4):
+        condition, by_phi, _ = _outlet_terms(phi, chi)
+        usable = (np.abs(np.cos(phi)) > 1e-6) * (np.abs(by_phi) > 1e-300)
+        phi = phi - usable * condition / (by_phi + (1 - usable))
+    return phi
+
+
+@register_jitable
+def outlet(chi):
+    r"""(φ_c [rad], dφ_c/dχ) at the direction χ (scalar): :func:`_outlet_angle` and, by implicit differentiation
+    of the outlet condition C(φ, χ) = cos χ (J₂c² − s²J₀) + sin χ (J₁c² − scJ₀) = 0, −C_χ/C_φ with
+    :math:`C_\varphi = -2sc(J_2 + J_0)\cos\chi - (2scJ_1 + (c^2 - s^2)J_0)\sin\chi`; 0 at the table's ends."""
+    phi = _outlet_angle(chi)
+    _, by_phi, by_chi = _outlet_terms(phi, chi)
+    if abs(np.cos(phi)) <= 1e-6 or abs(by_phi) <= 1e-300:
+        return phi, 0.0
+    return phi, -by_chi / by_phi
+
+
+@register_jitable
 def film_forces(viscosity, entrainment, sliding, gap_rate, radius, length, half_width, gap):
     r"""(load W [N] pushing the cylinder off the plane, Couette force [N] on the cylinder along the sliding,
     Poiseuille shear :math:`f_P` [N], signed as u) of the film at gap :math:`h_0` > 0 [m], entrainment speed u
@@ -97,7 +134,7 @@ def film_forces(viscosity, entrainment, sliding, gap_rate, radius, length, half_
     squeeze = gap_rate * span / gap
     speed = np.sqrt(entrainment * entrainment + squeeze * squeeze)
     chi = np.arctan2(squeeze, np.abs(entrainment))
-    phi = np.interp(chi, DIRECTION, OUTLET)
+    phi = _outlet_angle(chi)
     j0, j1, j2, j3, k0, k1, k2 = _integrals(phi)
     s, c = np.sin(phi), np.cos(phi)
     along, across = np.cos(chi), np.sin(chi)
@@ -109,3 +146,54 @@ def film_forces(viscosity, entrainment, sliding, gap_rate, radius, length, half_
     poiseuille = (c * c > 1e-12) * 12.0 * viscosity * length * span / gap * speed * shear
     couette = -2.0 * viscosity * length * sliding * span / gap * np.arctan(half_width / span)
     return np.maximum(load, 0.0), couette, np.sign(entrainment) * np.maximum(poiseuille, 0.0)
+
+
+@register_jitable
+def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length, half_width, gap):
+    r"""Derivatives of :func:`film_forces`: (∂W, ∂F_c, ∂f_P), each over (h₀, ḣ₀, u, Δu), scalars. With
+    :math:`q = \dot h_0 (2R/h_0)^{1/2}` and the outlet φ_c(χ) of the tabulated direction χ (its slope on the
+    table's segment), :math:`W = -(24\eta R l/h_0)(|u| A + q B)` with :math:`A = J_3 + s^2c^2/4`,
+    :math:`B = J_2 + sc^3/4` (:math:`A' = sc/2`, :math:`B' = c^2/4`), and
+    :math:`f_P = \mathrm{sign}(u)\,12\eta l (2R/h_0)^{1/2}(|u|P + qQ)` with :math:`P = K_2 - \xi_c^2K_0`,
+    :math:`Q = K_1 - \xi_cK_0` (:math:`P' = -2sK_0/c^3`, :math:`Q' = -K_0/c^2`)."""
+    root = np.sqrt(2.0 * radius / gap)  # span/h
+    squeeze = gap_rate * root
+    magnitude = abs(entrainment)
+    speed2 = magnitude * magnitude + squeeze * squeeze
+    chi = np.arctan2(squeeze, magnitude)
+    phi, outlet_slope = outlet(chi)
+    j0, j1, j2, j3, k0, k1, k2 = _integrals(phi)
+    s, c = np.sin(phi), np.cos(phi)
+    chi_u = -squeeze / speed2 if speed2 > 0.0 else 0.0
+    chi_q = magnitude / speed2 if speed2 > 0.0 else 0.0
+    sign = np.sign(entrainment)
+    load_scale = 24.0 * viscosity * radius * length / gap
+    a_term, b_term = j3 + s * s * c * c / 4.0, j2 + s * c**3 / 4.0
+    load = -load_scale * (magnitude * a_term + squeeze * b_term)
+    load_slopes = np.zeros(4)
+    if load > 0.0:
+        along_phi = magnitude * s * c / 2.0 + squeeze * c * c / 4.0
+        load_u = -load_scale * (a_term + along_phi * outlet_slope * chi_u)
+        load_q = -load_scale * (b_term + along_phi * outlet_slope * chi_q)
+        load_slopes[0] = -load / gap - load_q * squeeze / (2.0 * gap)
+        load_slopes[1] = load_q * root
+        load_slopes[2] = sign * load_u
+    shear_slopes = np.zeros(4)
+    if c * c > 1e-12:
+        p_term, q_term = k2 - s * s / (c * c) * k0, k1 - s / c * k0
+        shear_scale = 12.0 * viscosity * length * root
+        shear = shear_scale * (magnitude * p_term + squeeze * q_term)
+        if shear > 0.0:
+            along_phi = magnitude * (-2.0 * s * k0 / c**3) + squeeze * (-k0 / (c * c))
+            shear_u = shear_scale * (p_term + along_phi * outlet_slope * chi_u)
+            shear_q = shear_scale * (q_term + along_phi * outlet_slope * chi_q)
+            shear_slopes[0] = sign * (-shear / (2.0 * gap) - shear_q * squeeze / (2.0 * gap))
+            shear_slopes[1] = sign * shear_q * root
+            shear_slopes[2] = shear_u  # sign(u)² = 1
+    span = root * gap
+    angle = np.arctan(half_width / span)
+    couette_slopes = np.zeros(4)
+    couette_slopes[3] = -2.0 * viscosity * length * root * angle
+    couette_slopes[0] = -2.0 * viscosity * length * sliding * (
+        -root / (2.0 * gap) * angle - root * half_width / (span * span + half_width * half_width) * span / (2.0 * gap))
+    return load_slopes, couette_slopes, shear_slopes

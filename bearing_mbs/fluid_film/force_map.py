@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba.extending import register_jitable
 
+from bearing_mbs.fluid_film.closed_forms import journal_motion_slopes
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
 from bearing_mbs.fluid_film.reynolds import JournalState, solve_film
 
@@ -108,6 +109,55 @@ def map_force(normal, tangential, eccentricity_step, e_x, e_y, v_x, v_y, speed, 
     scale = magnitude / (1.0 - min(eps, (rows - 1) * eccentricity_step) ** 2) ** SCALING_POWER
     f_n, f_t = scale * f_n, scale * f_t
     return f_n * n_x - f_t * n_y, f_n * n_y + f_t * n_x
+
+
+@register_jitable
+def map_force_jacobian(normal, tangential, eccentricity_step, e_x, e_y, v_x, v_y, speed, clearance):
+    """∂(F_x, F_y)/∂(e_x, e_y, v_x, v_y, Ω) of :func:`map_force` (2 × 5): the bilinear interpolant's slopes on its
+    cell in ε and in the motion's angle atan2(2ε̇, ε(Ω − 2ψ̇)), the scale's magnitude and ε, and the turning of the
+    line of centres (:func:`~bearing_mbs.fluid_film.closed_forms.journal_motion_slopes`)."""
+    jacobian = np.zeros((2, 5))
+    if math.sqrt(e_x * e_x + e_y * e_y) < 1e-12 * clearance:
+        return jacobian
+    n_x, n_y, eps, eps_rate, a, nx_d, ny_d, eps_d, eps_rate_d, a_d = journal_motion_slopes(
+        e_x, e_y, v_x, v_y, speed, clearance)
+    b, b_d = 2.0 * eps_rate, 2.0 * eps_rate_d
+    magnitude = math.sqrt(a * a + b * b)
+    if magnitude <= 0.0:
+        return jacobian
+    magnitude_d = (a * a_d + b * b_d) / magnitude
+    rows, columns = normal.shape
+    raw = eps / eccentricity_step
+    position = min(raw, rows - 1.0 - 1e-12)
+    position_d = eps_d / eccentricity_step if raw < rows - 1.0 - 1e-12 else np.zeros(5)
+    i = int(position)
+    u = position - i
+    angle = math.atan2(b, a) % (2.0 * math.pi) / (2.0 * math.pi) * columns
+    angle_d = columns / (2.0 * math.pi) * (a * b_d - b * a_d) / (magnitude * magnitude)
+    k = int(angle) % columns
+    w = angle - int(angle)
+    k1 = (k + 1) % columns
+    values = np.zeros(2)
+    values_d = np.zeros((2, 5))
+    for m in range(2):
+        table = normal if m == 0 else tangential
+        low = (1 - w) * table[i, k] + w * table[i, k1]
+        high = (1 - w) * table[i + 1, k] + w * table[i + 1, k1]
+        values[m] = (1 - u) * low + u * high
+        by_w = (1 - u) * (table[i, k1] - table[i, k]) + u * (table[i + 1, k1] - table[i + 1, k])
+        values_d[m] = (high - low) * position_d + by_w * angle_d
+    largest = (rows - 1) * eccentricity_step
+    bounded = min(eps, largest)
+    divisor = (1.0 - bounded**2) ** SCALING_POWER
+    scale = magnitude / divisor
+    scale_d = magnitude_d / divisor
+    if eps < largest:
+        scale_d += scale * SCALING_POWER * 2.0 * eps / (1.0 - eps**2) * eps_d
+    f_n, f_t = scale * values[0], scale * values[1]
+    f_n_d, f_t_d = scale_d * values[0] + scale * values_d[0], scale_d * values[1] + scale * values_d[1]
+    jacobian[0] = f_n_d * n_x + f_n * nx_d - f_t_d * n_y - f_t * ny_d
+    jacobian[1] = f_n_d * n_y + f_n * ny_d + f_t_d * n_x + f_t * nx_d
+    return jacobian
 
 
 def interpolation_error(bearing: JournalBearing, force_map: ForceMap, grid: tuple[int, int] = (120, 30)) -> float:
