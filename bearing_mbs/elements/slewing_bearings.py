@@ -65,6 +65,19 @@ def pack(joints) -> SlewingBearingArrays:
 
 
 @numba.njit(cache=True, inline="always")
+def diagonal(a0, alpha, r, c, d, radial, axial, tilt, k):
+    """(s_r, s_z, |s|, load Q, slope Q′) of the diagonal d = ±1 of the ball at cos ψ = c, at the inner ring's
+    displacement (radial, axial, tilt); Q = Q′ = 0 where the centres have not moved apart."""
+    s_r = a0 * math.cos(alpha) + radial * c
+    s_z = d * a0 * math.sin(alpha) + axial + tilt * r * c
+    length = math.sqrt(s_r * s_r + s_z * s_z)
+    approach = length - a0
+    if approach <= 0.0:
+        return s_r, s_z, length, 0.0, 0.0
+    return s_r, s_z, length, k * approach**1.5, 1.5 * k * math.sqrt(approach)
+
+
+@numba.njit(cache=True, inline="always")
 def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
     joints = parameters
     for j in range(joints.body.size):
@@ -79,14 +92,9 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
             for d in (1.0, -1.0):
-                s_r = a0 * math.cos(alpha) + radial * c
-                s_z = d * a0 * math.sin(alpha) + axial + tilt * r * c
-                length = math.sqrt(s_r * s_r + s_z * s_z)
-                approach = length - a0
-                if approach <= 0.0:
+                s_r, s_z, length, load, slope = diagonal(a0, alpha, r, c, d, radial, axial, tilt, k)
+                if load <= 0.0:
                     continue
-                load = k * approach**1.5
-                slope = 1.5 * k * math.sqrt(approach)
                 u_r, u_z = s_r / length, s_z / length
                 f0 += load * u_r * c
                 f1 += load * u_z
@@ -195,15 +203,11 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
             c = math.cos(2.0 * math.pi * n / balls)
             b_matrix = np.array([[c, 0.0, 0.0], [0.0, 1.0, r * c]])
             for d in (1.0, -1.0):
-                s_r = a0 * math.cos(alpha) + displacement[0] * c
-                s_z = d * a0 * math.sin(alpha) + displacement[1] + displacement[2] * r * c
-                length = math.sqrt(s_r * s_r + s_z * s_z)
-                approach = length - a0
-                if approach <= 0.0:
+                s_r, s_z, length, load, slope = diagonal(a0, alpha, r, c, d, displacement[0], displacement[1],
+                                                         displacement[2], k)
+                if load <= 0.0:
                     continue
-                load = k * approach**1.5
-                slope = 1.5 * k * math.sqrt(approach)
-                curvature = 0.75 * k / math.sqrt(approach)
+                curvature = 1.125 * k * k / slope  # 0.75 K δ^(−1/2), with δ^(1/2) = Q′/1.5K
                 unit = np.array([s_r / length, s_z / length])
                 outer = np.outer(unit, unit)
                 a_coef, b_coef = slope - load / length, load / length
