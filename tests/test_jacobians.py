@@ -207,7 +207,8 @@ def test_the_lubricated_laws_slopes_match_finite_differences(k):
     row[list(traction.TRACTION_COLUMNS).index("rolling_resistance")] = 1.0
     boundary, vreg = 0.1, 0.01
     for slip, rolling, load in ((1e-4, 5.0, 3e3), (0.3, 2.0, 2e4), (-0.02, -8.0, 500.0), (0.5, 0.004, 1e3)):
-        slopes = traction.ehl_traction_slopes(row, slip, rolling, load, boundary, vreg)
+        mu_value, *slopes = traction.ehl_traction_slopes(row, slip, rolling, load, boundary, vreg)
+        assert mu_value == traction.ehl_traction(row, slip, rolling, load, boundary, vreg)[0]
         expected = (scalar_slope(lambda x: traction.ehl_traction(row, x, rolling, load, boundary, vreg)[0], slip,
                                  1e-4 * max(abs(slip), vreg)),
                     scalar_slope(lambda x: traction.ehl_traction(row, slip, x, load, boundary, vreg)[0], rolling,

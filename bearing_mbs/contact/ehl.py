@@ -115,15 +115,23 @@ def film_thickness(formula, speed, load_per_length, viscosity, pressure_viscosit
 
 
 @register_jitable
-def rolling_force(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length):
-    """The isothermal hydrodynamic rolling force F_R [N] of a line contact of length l [m] at entrainment speed
-    u [m/s] >= 0 and load per length w [N/m] >= 0: Zhou–Hoeprich's, or the rigid, isoviscous one where that is
-    smaller (light loads); 0 at u = 0 or w = 0."""
+def _rolling_regimes(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length):
+    """(Zhou–Hoeprich's, the rigid isoviscous) rolling force [N]: the two regimes :func:`rolling_force` chooses
+    between."""
     c, e_gu, e_w = _ZHOU_HOEPRICH
     u_group = viscosity * speed / (modulus * radius)
     w_group = load_per_length / (modulus * radius)
     elastic = c / pressure_viscosity * (pressure_viscosity * modulus * u_group) ** e_gu * w_group**e_w * radius * length
     rigid = _RIGID_ROLLING * np.sqrt(viscosity * speed * load_per_length) * length
+    return elastic, rigid
+
+
+@register_jitable
+def rolling_force(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length):
+    """The isothermal hydrodynamic rolling force F_R [N] of a line contact of length l [m] at entrainment speed
+    u [m/s] >= 0 and load per length w [N/m] >= 0: Zhou–Hoeprich's, or the rigid, isoviscous one where that is
+    smaller (light loads); 0 at u = 0 or w = 0."""
+    elastic, rigid = _rolling_regimes(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length)
     return np.minimum(elastic, rigid)
 
 
@@ -159,11 +167,8 @@ def film_thickness_exponents(formula):
 def rolling_force_exponents(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length):
     """d ln F_R/d ln u and d ln F_R/d ln w of :func:`rolling_force`: Zhou–Hoeprich's 0.658 and 0.0126 where it
     is the smaller, the rigid regime's 1/2 and 1/2 elsewhere."""
-    c, e_gu, e_w = _ZHOU_HOEPRICH
-    u_group = viscosity * speed / (modulus * radius)
-    w_group = load_per_length / (modulus * radius)
-    elastic = c / pressure_viscosity * (pressure_viscosity * modulus * u_group) ** e_gu * w_group**e_w * radius * length
-    rigid = _RIGID_ROLLING * np.sqrt(viscosity * speed * load_per_length) * length
+    _, e_gu, e_w = _ZHOU_HOEPRICH
+    elastic, rigid = _rolling_regimes(speed, load_per_length, viscosity, pressure_viscosity, modulus, radius, length)
     return (e_gu, e_w) if elastic < rigid else (0.5, 0.5)
 
 

@@ -112,6 +112,24 @@ def curve_traction(slide_to_roll, a, b, c, d):
 
 
 @register_jitable
+def _contact_film(row, rolling, normal_force, regularisation_speed):
+    """(entrainment speed u floored at v_reg [m/s], load per length w [N/m], central and minimum film [m] with the
+    inlet heating's reduction if on, Murch–Wilson's loading L (0 with it off)) of a lubricated line contact."""
+    speed = max(abs(rolling), regularisation_speed)
+    viscosity = row[_VISCOSITY]
+    load = normal_force / row[_LENGTH]
+    central, minimum = ehl.film_thickness(int(row[_FORMULA]), speed, load, viscosity, row[_PRESSURE_VISCOSITY],
+                                          row[_MODULUS], row[_RADIUS])
+    loading = 0.0
+    if row[_THERMAL] > 0.0:
+        loading = ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY], row[_CONDUCTIVITY])
+        reduction = ehl.thermal_reduction(loading)
+        central *= reduction
+        minimum *= reduction
+    return speed, load, central, minimum, loading
+
+
+@register_jitable
 def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regularisation_speed):
     """(μ [-], minimum film [m], Λ [-]) of a lubricated line contact.
 
@@ -119,17 +137,9 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
     kinematics; normal force Q [N] > 0; μ_b and v_reg [m/s] of the boundary friction. The entrainment speed is
     floored at v_reg, where the film and the slide-to-roll ratio lose their meaning.
     """
-    speed = max(abs(rolling), regularisation_speed)
-    length, radius, modulus = row[_LENGTH], row[_RADIUS], row[_MODULUS]
-    viscosity, pressure_viscosity, roughness = row[_VISCOSITY], row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
-    load = normal_force / length
-    central, minimum = ehl.film_thickness(int(row[_FORMULA]), speed, load, viscosity, pressure_viscosity, modulus,
-                                          radius)
-    if row[_THERMAL] > 0.0:
-        reduction = ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY],
-                                                              row[_CONDUCTIVITY]))
-        central *= reduction
-        minimum *= reduction
+    speed, load, central, minimum, _ = _contact_film(row, rolling, normal_force, regularisation_speed)
+    radius, modulus, viscosity = row[_RADIUS], row[_MODULUS], row[_VISCOSITY]
+    pressure_viscosity, roughness = row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
     film_parameter = ehl.film_parameter(minimum, roughness)
     share = asperity_share(film_parameter)
     if row[_MODEL] == _EYRING:
@@ -234,24 +244,15 @@ def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosi
 
 @register_jitable
 def ehl_traction_slopes(row, slip, rolling, normal_force, boundary_coefficient, regularisation_speed):
-    """(∂μ/∂Δu [s/m], ∂μ/∂u [s/m], ∂μ/∂Q [1/N]) of :func:`ehl_traction` (Q > 0): the film's and Λ's power laws in
-    the speed and load (:func:`.ehl.film_thickness_exponents`, the inlet heating's log slope), the blend by ψ(Λ),
-    and the film-shear model's slopes. The entrainment speed is floored at v_reg, where ∂μ/∂u is 0."""
-    speed = max(abs(rolling), regularisation_speed)
+    """(μ [-], ∂μ/∂Δu [s/m], ∂μ/∂u [s/m], ∂μ/∂Q [1/N]) of :func:`ehl_traction` (Q > 0): the film's and Λ's power
+    laws in the speed and load (:func:`.ehl.film_thickness_exponents`, the inlet heating's log slope), the blend by
+    ψ(Λ), and the film-shear model's slopes. The entrainment speed is floored at v_reg, where ∂μ/∂u is 0."""
+    speed, load, central, minimum, loading = _contact_film(row, rolling, normal_force, regularisation_speed)
     speed_rolling = math.copysign(1.0, rolling) if abs(rolling) > regularisation_speed else 0.0
-    length, radius, modulus = row[_LENGTH], row[_RADIUS], row[_MODULUS]
-    viscosity, pressure_viscosity, roughness = row[_VISCOSITY], row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
-    load = normal_force / length
-    formula = int(row[_FORMULA])
-    central, minimum = ehl.film_thickness(formula, speed, load, viscosity, pressure_viscosity, modulus, radius)
-    (central_u, central_w), (minimum_u, minimum_w) = ehl.film_thickness_exponents(formula)
-    thermal = 0.0  # d ln φ_T / d ln u
-    if row[_THERMAL] > 0.0:
-        loading = ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY], row[_CONDUCTIVITY])
-        reduction = ehl.thermal_reduction(loading)
-        central *= reduction
-        minimum *= reduction
-        thermal = 2.0 * ehl.thermal_reduction_slope(loading)
+    radius, modulus, viscosity = row[_RADIUS], row[_MODULUS], row[_VISCOSITY]
+    pressure_viscosity, roughness = row[_PRESSURE_VISCOSITY], row[_ROUGHNESS]
+    (central_u, central_w), (minimum_u, minimum_w) = ehl.film_thickness_exponents(int(row[_FORMULA]))
+    thermal = 2.0 * ehl.thermal_reduction_slope(loading) if row[_THERMAL] > 0.0 else 0.0  # d ln φ_T / d ln u
     film_parameter = ehl.film_parameter(minimum, roughness)
     share = asperity_share(film_parameter)
     share_log = -1.8 * 1.2 * film_parameter**1.2 * share  # dψ/d ln Λ
@@ -278,7 +279,8 @@ def ehl_traction_slopes(row, slip, rolling, normal_force, boundary_coefficient, 
         fluid = curve_traction(ratio, a, b, c, row[_CURVE_D])
         curve_slope = (b - c * (a + b * abs(ratio))) * math.exp(-c * abs(ratio))
         fluid_slip, fluid_speed, fluid_load = curve_slope / speed, -curve_slope * ratio, 0.0
-    return (share * boundary_slip + (1.0 - share) * fluid_slip,
+    return (share * boundary + (1.0 - share) * fluid,
+            share * boundary_slip + (1.0 - share) * fluid_slip,
             (share_speed * (boundary - fluid) + (1.0 - share) * fluid_speed) / speed * speed_rolling,
             (share_load * (boundary - fluid) + (1.0 - share) * fluid_load) / normal_force)
 

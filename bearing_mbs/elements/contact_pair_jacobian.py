@@ -34,8 +34,7 @@ def _law_partials(pairs, k, fn, normal_gap, normal_rate, gap, gap_rate, slip, ro
     if law == _EHL:
         if fn > 0.0:
             row, boundary = pairs.traction[k], pairs.friction_coefficient[k]
-            mu = traction.ehl_traction(row, slip, rolling, fn, boundary, vreg)[0]
-            mu_slip, mu_rolling, mu_load = traction.ehl_traction_slopes(row, slip, rolling, fn, boundary, vreg)
+            mu, mu_slip, mu_rolling, mu_load = traction.ehl_traction_slopes(row, slip, rolling, fn, boundary, vreg)
             d_ft = -(mu + fn * mu_load) * d_fn
             d_ft[2] -= fn * mu_slip
             d_ft[3] -= fn * mu_rolling
@@ -60,22 +59,20 @@ def _law_partials(pairs, k, fn, normal_gap, normal_rate, gap, gap_rate, slip, ro
         spin_sign = regularised_sign(law, spin * rb, vreg)
         d_moment -= arm * spin_sign * d_fn
         d_moment[4] -= arm * fn * regularised_sign_slope(law, spin * rb, vreg) * rb
-    if pairs.film[k, 0] > 0.0:
-        _add_film_partials(pairs, k, gap, gap_rate, slip, rolling, d_fn, d_ft, d_moment)
     return d_fn, d_ft, d_moment
 
 
 @numba.njit(cache=True)
-def _add_film_partials(pairs, k, gap, gap_rate, slip, rolling, d_fn, d_ft, d_moment):
-    """Add the film's load, Couette shear and Poiseuille shear (split as the rolling resistance's) to the
-    partials over (gap, gap rate, slip, rolling speed, spin); below the floor the film does not see the gap."""
+def _add_film_partials(pairs, k, gap, gap_rate, slip, rolling, poiseuille, d_fn, d_ft, d_moment):
+    """Add the film's load, Couette shear and Poiseuille shear f_P (``poiseuille``, split as the rolling
+    resistance's) to the partials over (gap, gap rate, slip, rolling speed, spin); below the floor the film does
+    not see the gap."""
     length, viscosity, half_width, floor = pairs.film[k, 0], pairs.film[k, 1], pairs.film[k, 2], pairs.film[k, 3]
     rb, ra, orientation = pairs.radius_b[k], pairs.radius_a[k], ORIENTATION[pairs.kind[k]]
     film_gap = max(gap, floor)
     load, couette, shear = film_force_slopes(viscosity, rolling, slip, gap_rate, rb, length, half_width, film_gap)
     if gap < floor:
         load[0] = couette[0] = shear[0] = 0.0
-    poiseuille = film_forces(viscosity, rolling, slip, gap_rate, rb, length, half_width, film_gap)[2]
     share = kinematics.contact_point_share(orientation, ra, rb, gap)
     share_gap = -rb / (ra + orientation * (rb + gap)) ** 2 if orientation != 0 else 0.0
     # (h, ḣ, u, Δu) → (gap, gap rate, slip, rolling, spin)
@@ -91,7 +88,8 @@ def _add_film_partials(pairs, k, gap, gap_rate, slip, rolling, d_fn, d_ft, d_mom
 @numba.njit(cache=True)
 def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
     r"""∂F/∂q and ∂F/∂v of the pairs in contact (and of those with a film), by the chain rule: the laws' partial
-    derivatives in the pair's gap, gap rate, slip, rolling speed and spin (:func:`_law_partials`) times those
+    derivatives in the pair's gap, gap rate, slip, rolling speed and spin (:func:`_law_partials`,
+    :func:`_add_film_partials`) times those
     quantities' derivatives (:func:`bearing_mbs.contact.pair_jacobian.pair_motion_jacobian`), and the turning of
     the normal and the moving contact point for the force's direction and arm. The force on b is
     :math:`F = F_N n + F_T t` at c, its torque :math:`-r_b F_T + M`; a receives −F at c and :math:`-(c - c_a)\times F
@@ -110,12 +108,16 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
             normal_gap, normal_rate = normal.hysteresis_force_slopes(
                 gap, gap_rate, pairs.stiffness[k], pairs.exponent[k], pairs.damping_factor[k], latched[k],
                 pairs.approach_speed_floor[k])
-        dry = fn  # the contact's own normal force, which its friction law reads: less any film's load
-        if pairs.film[k, 0] > 0.0:
-            dry -= film_forces(pairs.film[k, 1], rolling, slip, gap_rate, rb, pairs.film[k, 0], pairs.film[k, 2],
-                               max(gap, pairs.film[k, 3]))[0]
-        d_fn, d_ft, d_moment = _law_partials(pairs, k, dry, normal_gap, normal_rate, gap, gap_rate, slip, rolling,
-                                             spin)
+        film = pairs.film[k, 0] > 0.0
+        film_load = poiseuille = 0.0
+        if film:
+            film_load, _, poiseuille = film_forces(pairs.film[k, 1], rolling, slip, gap_rate, rb, pairs.film[k, 0],
+                                                   pairs.film[k, 2], max(gap, pairs.film[k, 3]))
+        # the contact's own normal force, which its friction law reads: less any film's load
+        d_fn, d_ft, d_moment = _law_partials(pairs, k, fn - film_load, normal_gap, normal_rate, gap, gap_rate, slip,
+                                             rolling, spin)
+        if film:
+            _add_film_partials(pairs, k, gap, gap_rate, slip, rolling, poiseuille, d_fn, d_ft, d_moment)
         # over (z, ż): the five quantities' derivatives
         gap_z = np.zeros(12)
         gap_z[:6] = gap_q
