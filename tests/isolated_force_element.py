@@ -115,6 +115,13 @@ SOLVERS = {
     "exudyn_rk4": SolverSpec(engine="exudyn", output_interval=1e-3, exudyn=ExudynSolver(method="rk4", step=1e-5)),
     "exudyn_python": SolverSpec(engine="exudyn", output_interval=1e-3,
                                 exudyn=ExudynSolver(method="rk4", step=1e-5, connector="python")),
+    # implicit: the spring has no analytic Jacobian, so the reference engine's generalized-α differentiates the
+    # accelerations numerically and Exudyn its force user function (a step of 2e-6 s keeps generalized-α's phase
+    # error, about (ωh)²ωt/12, below 1e-7 of A)
+    "reference_generalized_alpha": SolverSpec(engine="reference", output_interval=1e-3, reference=ReferenceSolver(
+        method="generalized_alpha", step=2e-6, tolerance=1e-12)),
+    "exudyn_generalized_alpha": SolverSpec(engine="exudyn", output_interval=1e-3, exudyn=ExudynSolver(
+        method="generalized_alpha", step=2e-6, tolerance=1e-12)),
 }
 
 
@@ -131,6 +138,8 @@ def test_spring_oscillates_at_the_two_body_frequency(registered, solver):
     total = energy(scene, result)["total"]
     assert np.ptp(total) <= 1e-6 * total[0]
     assert scene_counts(scene)["springs"] == 1
+    if solver == "exudyn_generalized_alpha":
+        assert result.metadata["jacobian"] == "numerical"  # no analytic Jacobian for a kind from outside
 
 
 @pytest.mark.parametrize("solver", ["reference_rk4", "exudyn_rk4"])

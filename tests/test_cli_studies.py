@@ -93,6 +93,25 @@ def test_numerics_report_writes_figure_and_tables(tmp_path):
     assert "cheapest sound setting" in (out / "work_precision_tiny.md").read_text()
 
 
+def test_a_run_is_sound_by_its_slip_error_relative_to_the_slips_where_they_are_large(tmp_path):
+    """1e-4 absolute where the reference's slips are small (the dry bearing's 1.6e-5); 1 % of the largest slip where
+    that is larger (the lubricated bearing's 6 %: an error of 3e-4 is 0.5 % of it)."""
+    from bearing_mbs.studies.numerics_report import read
+
+    columns = ("engine", "solver", "step", "tolerance", "error", "wall_time_s", "status", "positions", "cage_speed",
+               "roller_loads", "slips")
+    with (tmp_path / "convergence.csv").open("w", newline="") as handle:
+        writer = csv.DictWriter(handle, columns)
+        writer.writeheader()
+        for slips in (5e-5, 3e-4, 9e-4):
+            writer.writerow({"engine": "reference", "solver": "rk4", "step": 1e-6, "tolerance": "", "error": 1e-6,
+                             "wall_time_s": 1.0, "status": "success", "positions": 1e-6, "cage_speed": 1e-6,
+                             "roller_loads": 1e-6, "slips": slips})
+    assert [r["sound"] for r in read(tmp_path)] == [True, False, False]
+    (tmp_path / "summary.json").write_text('{"reference_largest_slip": 0.06}')
+    assert [r["sound"] for r in read(tmp_path)] == [True, True, False]
+
+
 @pytest.mark.parametrize("arguments", [
     ["skidding", str(STEADY), "--cages", "brass"],                                 # no such cage model
     ["skidding", str(STEADY), "--loads", "68000,heavy"],                           # not a number

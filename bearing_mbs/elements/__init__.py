@@ -8,6 +8,8 @@ from bearing_mbs.elements.assembly import (
     PackedScene,
     element_forces,
     element_forces_twin,
+    element_jacobian,
+    has_analytic_jacobian,
     pack_scene,
     scene_counts,
     scene_forces,
@@ -19,4 +21,5 @@ from bearing_mbs.elements.registry import FORCE_ELEMENTS
 from bearing_mbs.elements.servos import VelocityServo
 
 __all__ = ["FORCE_ELEMENTS", "Drag", "Load", "PackedScene", "VelocityServo", "element_forces", "element_forces_twin",
-           "pack_scene", "scene_counts", "scene_forces", "scene_forces_twin"]
+           "element_jacobian", "has_analytic_jacobian", "pack_scene", "scene_counts", "scene_forces",
+           "scene_forces_twin"]

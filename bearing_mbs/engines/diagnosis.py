@@ -41,7 +41,9 @@ def failure_message(failure: Failure, scene, solver, t: float, culprit: int, q, 
     if failure == Failure.PENETRATION:
         return penetration_message(scene, solver, t, culprit, q, v)
     if failure == Failure.STEP_UNDERFLOW:
-        return (f"t = {t:.6g} s: the adaptive step fell to {h:.3g} s. Likely fix: loosen the tolerance "
+        what = ("Newton's method kept failing and generalized-alpha's step" if getattr(settings, "implicit", False)
+                else "the adaptive step")
+        return (f"t = {t:.6g} s: {what} fell to {h:.3g} s. Likely fix: loosen the tolerance "
                 f"(now {settings.tolerance:g}) or raise the friction regularisation speed.")
     if failure == Failure.PROJECTION_FAILED:
         return f"t = {t:.6g} s: the constraint projection did not converge. Likely fix: {smaller_step(solver)}."

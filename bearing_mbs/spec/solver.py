@@ -9,9 +9,12 @@ from dataclasses import dataclass, field
 from bearing_mbs.spec.fields import SpecError, in_range, one_of, positive
 
 #: Reference-engine integrators (``bearing_mbs.engines.reference``).
-REFERENCE_METHODS = ("central_difference", "velocity_verlet", "rk4", "dopri5")
+REFERENCE_METHODS = ("central_difference", "velocity_verlet", "rk4", "dopri5", "generalized_alpha",
+                     "generalized_alpha_adaptive")
 #: Of those, the ones that adapt their step to ``tolerance``.
-REFERENCE_ADAPTIVE = ("dopri5",)
+REFERENCE_ADAPTIVE = ("dopri5", "generalized_alpha_adaptive")
+#: Of those, the implicit ones (Newton's method on the force elements' Jacobian).
+REFERENCE_IMPLICIT = ("generalized_alpha", "generalized_alpha_adaptive")
 
 #: Exudyn 1.13.6 ``DynamicSolverType`` members, by our snake-case name.
 EXUDYN_METHODS = {
@@ -32,6 +35,9 @@ RENAMED_METHODS = {"rk44": "rk4"}
 EXUDYN_IMPLICIT = ("generalized_alpha", "trapezoidal_index2")
 EXUDYN_ADAPTIVE = ("ode23", "dopri5", "dverk6")
 CONNECTORS = ("compiled", "python", "native")
+#: How Exudyn's implicit solvers get the force elements' Jacobian: the elements' own (``analytic``) or Exudyn's
+#: finite differences of the force user function (``numerical``, 2n evaluations per Jacobian).
+JACOBIANS = ("analytic", "numerical")
 ENGINES = ("reference", "exudyn")
 
 
@@ -42,18 +48,21 @@ class ReferenceSolver:
     method: one of :data:`REFERENCE_METHODS`. step [s] > 0: the fixed step, or the first and largest step
     of ``dopri5``. contact_step [s]: ``central_difference`` only, the step used while any pair penetrates
     (the document's variable-step scheme, eq. 58); it must not exceed ``step``. tolerance: relative and
-    absolute (SI units) error per step for ``dopri5``.
+    absolute (SI units) error per step of the adaptive methods, and the Newton tolerance of the implicit ones.
+    spectral_radius: generalized-α's ρ∞ in [0, 1].
     """
 
     method: str = "rk4"
     step: float = 1e-6
     contact_step: float | None = None
     tolerance: float = 1e-8
+    spectral_radius: float = 0.9
 
     def __post_init__(self):
         one_of("method", self.method, REFERENCE_METHODS)
         positive("step", self.step)
         in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
+        in_range("spectral_radius", self.spectral_radius, 0.0, 1.0)
         if self.contact_step is not None:
             if self.method != "central_difference":
                 raise SpecError("contact_step", self.contact_step, "only the central_difference method uses it")
@@ -62,6 +71,10 @@ class ReferenceSolver:
     @property
     def adaptive(self) -> bool:
         return self.method in REFERENCE_ADAPTIVE
+
+    @property
+    def implicit(self) -> bool:
+        return self.method in REFERENCE_IMPLICIT
 
 
 @dataclass(frozen=True)
@@ -75,6 +88,8 @@ class ExudynSolver:
     adaptive methods and the Newton tolerance of implicit ones. connector: how contact forces reach Exudyn:
     ``compiled`` (the numba kernel in one ObjectGenericODE2), ``python`` (its numpy twin) or ``native``
     (Exudyn's ObjectContactSphereSphere, normal force only). spectral_radius: generalized-alpha ρ∞ in [0, 1].
+    jacobian: implicit methods only, one of :data:`JACOBIANS`; ``analytic`` needs every force element of the
+    scene to have one (the built-in kinds do) and falls back to ``numerical`` for a kind registered from outside.
     """
 
     method: str = "generalized_alpha"
@@ -82,6 +97,7 @@ class ExudynSolver:
     tolerance: float = 1e-8
     connector: str = "compiled"
     spectral_radius: float = 0.9
+    jacobian: str = "analytic"
 
     def __post_init__(self):
         if self.method in RENAMED_METHODS:
@@ -95,6 +111,7 @@ class ExudynSolver:
         in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
         one_of("connector", self.connector, CONNECTORS)
         in_range("spectral_radius", self.spectral_radius, 0.0, 1.0)
+        one_of("jacobian", self.jacobian, JACOBIANS)
 
     @property
     def adaptive(self) -> bool:

@@ -98,6 +98,18 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
     return norms
 
 
+def largest_slip(spec: Spec, scene, result: Result) -> float:
+    """The largest |slip ratio| of ``result`` at loaded contacts over the study's window (the scale of the
+    ``slips`` norm)."""
+    from bearing_mbs.models.cylindrical_roller import metrics as skidding
+
+    mask = window_mask(spec, result.time)
+    fraction = spec.analysis.load_fraction
+    slips = [np.abs(skidding.slip_ratios(scene, result, race, fraction)[mask]) for race in ("inner_race", "outer_race")]
+    both = np.concatenate([s.ravel() for s in slips])
+    return float(np.nanmax(both)) if np.isfinite(both).any() else 0.0
+
+
 def end_time(spec: Spec) -> float:
     """How far the study integrates [s]: the end of its window (``[convergence] end``), else the scenario's."""
     study = spec.convergence
@@ -132,6 +144,8 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
     reference = _cached_run(spec, scene, settings.reference, directory / "reference.npz", progress)
     summary = {"scenario": spec.scenario.name, "norm": settings.norm, "reference": _describe(settings.reference),
                "reference_wall_time_s": reference.stats.wall_time_s}
+    if spec.scenario.model == "bearing":
+        summary["reference_largest_slip"] = largest_slip(spec, scene, reference)
     if settings.check is not None:
         progress.next_run(2, total)
         check = _cached_run(spec, scene, settings.check, directory / "check.npz", progress)

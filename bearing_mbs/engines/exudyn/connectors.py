@@ -18,7 +18,7 @@ import numpy as np
 
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.core.scene import GROUND, Scene
-from bearing_mbs.elements import element_forces, element_forces_twin
+from bearing_mbs.elements import element_forces, element_forces_twin, element_jacobian
 from bearing_mbs.spec.fields import SpecError
 
 LINE_AS_SPHERE_RADIUS = 1e6
@@ -62,6 +62,29 @@ class ForceConnector:
         np.add(self.reference, q, out=self._q)  # Exudyn passes displacements from the reference
         self.evaluate(self.elements, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs, False)
         return self._forces
+
+
+class JacobianConnector:
+    """A Jacobian user function of the same GenericODE2: Exudyn's left-hand side is M q̈ − F, so it returns
+    −(f_q ∂F/∂q + f_v ∂F/∂q̇) with Exudyn's factors f_q, f_v (the elements' analytic Jacobians,
+    :func:`bearing_mbs.elements.element_jacobian`, at the pair outputs of a complete force evaluation)."""
+
+    def __init__(self, forces: ForceConnector):
+        self.forces = forces
+        self.evaluations = 0
+        n = forces.reference.size
+        self._position, self._velocity, self._matrix = np.empty((n, n)), np.empty((n, n)), np.empty((n, n))
+
+    def __call__(self, mbs, t, item_number, q, q_t, factor_position, factor_velocity):
+        self.evaluations += 1
+        f = self.forces
+        np.add(f.reference, q, out=f._q)
+        v = np.asarray(q_t)
+        element_forces(f.elements, t, f._q, v, f.latched, f._forces, f._pairs, True)
+        element_jacobian(f.elements, t, f._q, v, f.latched, f._pairs, self._position, self._velocity)
+        np.multiply(self._position, -factor_position, out=self._matrix)
+        self._matrix -= factor_velocity * self._velocity
+        return self._matrix
 
 
 def without_pairs(packed) -> tuple:

@@ -33,7 +33,7 @@ from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter, notice_if_slow
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import DistanceConstraint, OrbitConstraint, Scene
-from bearing_mbs.elements import element_forces, pack_scene
+from bearing_mbs.elements import element_forces, has_analytic_jacobian, pack_scene
 from bearing_mbs.engines.diagnosis import (
     diverged_message,
     interrupted_message,
@@ -43,6 +43,7 @@ from bearing_mbs.engines.diagnosis import (
 )
 from bearing_mbs.engines.exudyn.connectors import (
     ForceConnector,
+    JacobianConnector,
     add_native_contacts,
     check_native,
     without_pairs,
@@ -153,7 +154,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
             joints.append(mbs.AddObject(ObjectJointPrismatic2D(markerNumbers=[centre, on_line], axisMarker0=[1, 0, 0],
                                                                normalMarker1=[-dy, dx, 0], constrainRotation=False)))
 
-    connector = None
+    connector = jacobian = None
     native = settings.connector == "native"
     if native:
         add_native_contacts(mbs, scene, bodies, mbs.AddObject(ObjectGround()) if scene.pairs else -1)
@@ -165,7 +166,12 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
                             "about 5 s; later runs load them from the cache)"):
             connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
         connector.evaluations = 0
-        mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector))
+        if settings.implicit and settings.jacobian == "analytic" and has_analytic_jacobian(scene):
+            jacobian = JacobianConnector(connector)
+            jacobian(mbs, 0.0, 0, np.zeros(n), np.zeros(n), 1.0, 0.0)  # compile outside the timed region
+            jacobian.evaluations = 0
+        mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector,
+                                        jacobianUserFunction=jacobian or 0))
 
     monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
                            lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop or StopRequest())
@@ -208,7 +214,9 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events, body_names=tuple(b.name for b in scene.bodies),
         pair_names=tuple(p.name for p in scene.pairs), stats=stats,
         failure=monitor.failure, message=monitor.message, spec=spec, topology=scene.topology,
-        metadata={"connector": settings.connector, "exudyn_log": exudyn_log, "exudyn_version": exu.__version__},
+        metadata={"connector": settings.connector, "jacobian": _jacobian_used(settings, jacobian),
+                  "jacobian_user_evaluations": jacobian.evaluations if jacobian else 0, "exudyn_log": exudyn_log,
+                  "exudyn_version": exu.__version__},
     )
 
 
@@ -233,6 +241,13 @@ def _simulation_settings(exu, settings, end_time):
     ti.generalizedAlpha.spectralRadius = settings.spectral_radius
     ti.newton.relativeTolerance = settings.tolerance
     return s
+
+
+def _jacobian_used(settings, jacobian) -> str | None:
+    """How the force elements were differentiated: None for explicit methods."""
+    if not settings.implicit:
+        return None
+    return "analytic" if jacobian else "numerical"
 
 
 def _joint_force(mbs, exu, joint) -> float:

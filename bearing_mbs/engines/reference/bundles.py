@@ -7,7 +7,7 @@ driver (one chunk of output instants) to the next.
   the pairs' latched approach speeds [m/s], the event log and the cumulative work [J];
 * :class:`Controls` — the run's step, tolerance and guards;
 * :class:`RungeKuttaTableau` — a Butcher tableau as arrays (:mod:`bearing_mbs.engines.reference.tableaus`);
-* :class:`VerletCarry`, :class:`RungeKuttaStages` — each method's memory between steps;
+* :class:`VerletCarry`, :class:`RungeKuttaStages`, :class:`ImplicitCarry` — each method's memory between steps;
 * :class:`Workspace` — scratch arrays of one step;
 * :class:`Output` — the output instants, the buffers of decimated output and the run counters.
 """
@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from bearing_mbs.engines.reference.codes import COUNTERS
 from bearing_mbs.engines.reference.tableaus import ButcherTableau
 
 
@@ -35,13 +36,17 @@ class State(NamedTuple):
 class Controls(NamedTuple):
     """step [s]: the fixed step, or the first and largest adaptive step. contact_step [s]: the central
     difference's step while a pair penetrates (0: none). tolerance: relative and absolute tolerance of the
-    adaptive step. speed_limit [m/s] and penetration_bound (per pair) [m]: the run guards."""
+    adaptive step and the Newton tolerance of generalized-α. speed_limit [m/s] and penetration_bound (per pair) [m]:
+    the run guards. spectral_radius: generalized-α's ρ∞. analytic_jacobian: every force element of the scene has
+    an analytic Jacobian (else generalized-α differentiates numerically)."""
 
     step: float
     contact_step: float
     tolerance: float
     speed_limit: float
     penetration_bound: np.ndarray
+    spectral_radius: float
+    analytic_jacobian: bool
 
 
 class RungeKuttaTableau(NamedTuple):
@@ -85,6 +90,28 @@ class RungeKuttaStages(NamedTuple):
     power: np.ndarray
 
 
+class ImplicitCarry(NamedTuple):
+    """Generalized-α's memory and scratch: the current state's acceleration a_n and auxiliary acceleration ã_n,
+    its (supplied, dissipated) power [W], ``ready[0] == 1`` when they belong to the current state,
+    ``started[0] == 1`` once ã holds history; the Newton unknown and
+    increment, a base acceleration of the forward differences, the step [s] the Newton matrix was formed for
+    (inf: none yet), and the Newton matrix, its inverse and ∂F/∂q, ∂F/∂v (n × n each)."""
+
+    acceleration: np.ndarray
+    auxiliary: np.ndarray
+    power: np.ndarray
+    ready: np.ndarray
+    started: np.ndarray
+    unknown: np.ndarray
+    increment: np.ndarray
+    base: np.ndarray
+    matrix_step: np.ndarray
+    jacobian: np.ndarray
+    inverse: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+
+
 class Workspace(NamedTuple):
     """Scratch of one step: the candidate state (q_new, v_new), a stage state, an acceleration, the
     generalized forces, the pairs' outputs and the constraint forces [N]."""
@@ -101,8 +128,8 @@ class Workspace(NamedTuple):
 
 class Output(NamedTuple):
     """Output instants ``times`` [s] and one row per instant of t, q, v, pair outputs, work and constraint
-    forces; ``counters``: accepted steps, rejected steps, force evaluations (slots in
-    :mod:`bearing_mbs.engines.reference.codes`)."""
+    forces; ``counters``: accepted steps, rejected steps, force evaluations, Newton iterations, Jacobians (slots
+    in :mod:`bearing_mbs.engines.reference.codes`)."""
 
     times: np.ndarray
     t: np.ndarray
@@ -121,7 +148,7 @@ def new_output(times: np.ndarray, coordinate_count: int, pair_count: int, pair_o
     return Output(times, np.full(size, np.nan), np.full((size, coordinate_count), np.nan),
                   np.full((size, coordinate_count), np.nan), np.full((size, pair_count, pair_outputs), np.nan),
                   np.full((size, 2), np.nan), np.full((size, constraint_count), np.nan),
-                  np.zeros(3, dtype=np.int64))
+                  np.zeros(COUNTERS, dtype=np.int64))
 
 
 def new_workspace(coordinate_count: int, pair_count: int, pair_outputs: int, constraint_count: int) -> Workspace:
@@ -132,6 +159,13 @@ def new_workspace(coordinate_count: int, pair_count: int, pair_outputs: int, con
 
 def new_verlet_carry(coordinate_count: int) -> VerletCarry:
     return VerletCarry(np.zeros(coordinate_count), np.zeros(2), np.zeros(1, dtype=np.int64))
+
+
+def new_implicit_carry(coordinate_count: int) -> ImplicitCarry:
+    n = coordinate_count
+    return ImplicitCarry(np.zeros(n), np.zeros(n), np.zeros(2), np.zeros(1, dtype=np.int64),
+                         np.zeros(1, dtype=np.int64), np.zeros(n), np.zeros(n), np.zeros(n), np.full(1, np.inf),
+                         *(np.zeros((n, n)) for _ in range(4)))
 
 
 def new_runge_kutta_stages(stage_count: int, coordinate_count: int) -> RungeKuttaStages:

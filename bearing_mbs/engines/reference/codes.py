@@ -9,9 +9,10 @@ from __future__ import annotations
 from bearing_mbs.core.failures import Failure
 
 #: Method codes: the driver dispatches on them to each method's step function.
-CENTRAL_DIFFERENCE, VELOCITY_VERLET, RUNGE_KUTTA = 0, 1, 2
+CENTRAL_DIFFERENCE, VELOCITY_VERLET, RUNGE_KUTTA, GENERALIZED_ALPHA = 0, 1, 2, 3
 METHOD_CODES = {"central_difference": CENTRAL_DIFFERENCE, "velocity_verlet": VELOCITY_VERLET,
-                "rk4": RUNGE_KUTTA, "dopri5": RUNGE_KUTTA}
+                "rk4": RUNGE_KUTTA, "dopri5": RUNGE_KUTTA, "generalized_alpha": GENERALIZED_ALPHA,
+                "generalized_alpha_adaptive": GENERALIZED_ALPHA}
 
 #: Run status returned by the compiled driver (``RUNNING``: no failure so far).
 RUNNING = int(Failure.NONE)
@@ -20,6 +21,9 @@ PENETRATION = int(Failure.PENETRATION)
 STEP_UNDERFLOW = int(Failure.STEP_UNDERFLOW)
 PROJECTION_FAILED = int(Failure.PROJECTION_FAILED)
 BLOWUP = int(Failure.BLOWUP)
+SOLVER_FAILED = int(Failure.SOLVER_FAILED)
 
-#: Slots of the run counters (int64 array): accepted steps, rejected steps, force evaluations.
-STEPS, REJECTED, EVALUATIONS = 0, 1, 2
+#: Slots of the run counters (int64 array): accepted steps, rejected steps, force evaluations, and the implicit
+#: method's Newton iterations and Jacobians.
+STEPS, REJECTED, EVALUATIONS, NEWTON_ITERATIONS, JACOBIANS = 0, 1, 2, 3, 4
+COUNTERS = 5

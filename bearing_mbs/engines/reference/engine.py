@@ -15,11 +15,12 @@ from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter, notice_if_slow
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import Scene
-from bearing_mbs.elements import pack_scene
+from bearing_mbs.elements import has_analytic_jacobian, pack_scene
 from bearing_mbs.engines.diagnosis import failure_message, output_grid
 from bearing_mbs.engines.reference.bundles import (
     Controls,
     State,
+    new_implicit_carry,
     new_output,
     new_runge_kutta_stages,
     new_verlet_carry,
@@ -30,7 +31,10 @@ from bearing_mbs.engines.reference.central_difference import backward_difference
 from bearing_mbs.engines.reference.codes import (
     CENTRAL_DIFFERENCE,
     EVALUATIONS,
+    GENERALIZED_ALPHA,
+    JACOBIANS,
     METHOD_CODES,
+    NEWTON_ITERATIONS,
     REJECTED,
     RUNNING,
     STEPS,
@@ -41,8 +45,8 @@ from bearing_mbs.engines.reference.tableaus import TABLEAUS
 from bearing_mbs.spec.solver import SolverSpec
 
 #: What a user reads while the driver compiles (the first run after an install or a change of the kernels).
-COMPILING = ("compiling the reference engine's driver (once after an install or a source change, about 1.5 min; "
-             "later runs load it from the cache)")
+COMPILING = ("compiling the reference engine's driver (once after an install or a source change, about 1.5 min, and "
+             "as long again for generalized-alpha's; later runs load it from the cache)")
 
 #: Wall time [s] of one compiled chunk between two looks at the progress meter and the stop request.
 _CHUNK_WALL_TIME = 0.2
@@ -64,14 +68,16 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     method = METHOD_CODES[settings.method]
     tableau = runge_kutta_tableau(TABLEAUS.get(settings.method))
     controls = Controls(float(settings.step), float(settings.contact_step or 0.0), float(settings.tolerance),
-                        float(solver.speed_limit), bounds)
-    verlet = new_verlet_carry(n)
-    stages = new_runge_kutta_stages(tableau.b.size, n)
+                        float(solver.speed_limit), bounds, float(settings.spectral_radius), has_analytic_jacobian(scene))
+    # each kind of method gets its own carries, the other kind's are None (see integrate)
+    implicit, verlet, stages = new_implicit_carry(n), None, None
+    if method != GENERALIZED_ALPHA:
+        implicit, verlet, stages = None, new_verlet_carry(n), new_runge_kutta_stages(tableau.b.size, n)
     workspace = new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_count)
 
     def run(t, t_stop, h_adaptive, index):
-        return integrate(method, packed, tableau, controls, state, verlet, stages, workspace, output, t, t_stop,
-                         h_adaptive, index)
+        return integrate(method, settings.adaptive, packed, tableau, controls, state, verlet, stages, implicit,
+                         workspace, output, t, t_stop, h_adaptive, index)
 
     with notice_if_slow(COMPILING):
         run(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
@@ -112,8 +118,12 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
         progress.close()
 
     counters = output.counters
+    implicit_counts = {}
+    if method == GENERALIZED_ALPHA:
+        implicit_counts = {"newton_iterations": int(counters[NEWTON_ITERATIONS]),
+                           "jacobian_evaluations": int(counters[JACOBIANS])}
     stats = Stats(steps=int(counters[STEPS]), rejected_steps=int(counters[REJECTED]),
-                  force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall)
+                  force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall, **implicit_counts)
     failure = Failure(status)
     message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
     if failure == Failure.INTERRUPTED:  # stopped at an output instant: keep the instants computed

@@ -1,10 +1,11 @@
 r"""The driver of the compiled reference engine: from output instant to output instant with any method.
 
 :func:`integrate` chooses each step (equal steps per output interval for the fixed-step methods, the adaptive
-step for ``dopri5``, both landing exactly on the output instants), calls the method's step function
-(:mod:`~bearing_mbs.engines.reference.central_difference`, :mod:`~bearing_mbs.engines.reference.velocity_verlet`,
-:mod:`~bearing_mbs.engines.reference.runge_kutta`), projects the candidate state onto the constraints, applies
-the run guards (non-finite state, speed limit, penetration), accepts the step, updates the pairs' state once
+step for ``dopri5`` and generalized-α, all landing exactly on the output instants), calls the method's step
+function (:mod:`~bearing_mbs.engines.reference.central_difference`,
+:mod:`~bearing_mbs.engines.reference.velocity_verlet`, :mod:`~bearing_mbs.engines.reference.runge_kutta`,
+:mod:`~bearing_mbs.engines.reference.generalized_alpha`), projects the candidate state onto the constraints,
+applies the run guards (non-finite state, speed limit, penetration), accepts the step, updates the pairs' state once
 per accepted step, and stores the decimated output.
 """
 
@@ -33,8 +34,12 @@ from bearing_mbs.engines.reference.codes import (
 )
 from bearing_mbs.engines.reference.constraints import length_scale, project_positions, project_velocities
 from bearing_mbs.engines.reference.dynamics import accelerations
+from bearing_mbs.engines.reference.generalized_alpha import generalized_alpha_step
 from bearing_mbs.engines.reference.runge_kutta import reuse_last_stage, runge_kutta_step
 from bearing_mbs.engines.reference.velocity_verlet import velocity_verlet_step
+
+#: How far beyond the step an output instant may be and still be landed on in that step (not a sliver after it).
+LANDING_SLACK = 1e-9
 
 #: Largest constraint violation [× the constraints' length scale] a projection may leave.
 PROJECTION_ACCEPTANCE = 1e-10
@@ -67,21 +72,29 @@ def record_output(packed, index, t, state, workspace, output):
 
 
 @numba.njit(cache=True)
-def integrate(method, packed, tableau, controls, state, verlet, stages, workspace, output, t, t_stop, h_adaptive,
-              output_index):
+def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages, implicit, workspace, output, t,
+              t_stop, h_adaptive, output_index):
     """Advance ``state`` from t to t_stop (an output instant) with the method of code ``method``, writing the
     output instants from ``output_index`` on.
 
-    ``verlet`` carries velocity Verlet's last acceleration and power between calls, so chunks and output
-    instants do not change its result. Returns (t, h_adaptive, output_index, status, culprit): ``status`` is a
+    ``adaptive``: the method controls its step. ``verlet`` and ``implicit`` carry velocity Verlet's and
+    generalized-α's last acceleration and power between calls, so chunks and output instants do not change
+    their results. ``implicit`` is None for the explicit methods, ``verlet`` and ``stages`` for generalized-α:
+    numba prunes the branches of a None argument, so each kind of method compiles a driver without the other's
+    code (compiling both into one would double the first run's compile time). Returns (t, h_adaptive, output_index,
+    status, culprit): ``status`` is a
     :class:`~bearing_mbs.core.failures.Failure` code, ``culprit`` the offending pair (penetration) or coordinate
     (non-finite state, blow-up), −1 otherwise. On a stop, the state is the last good one.
     """
     q, v = state.q, state.v
     q_new, v_new = workspace.q_new, workspace.v_new
-    adaptive = tableau.b_error.size > 0
-    # velocity Verlet's carry, or the first Runge–Kutta stage, holds F at the current state
-    ready = method == VELOCITY_VERLET and verlet.ready[0] == 1
+    # velocity Verlet's or generalized-α's carry, or the first Runge–Kutta stage, holds F at the current state
+    ready, stepping = False, adaptive  # the step is h_adaptive (generalized-α's also after a retry)
+    if verlet is not None:
+        ready = method == VELOCITY_VERLET and verlet.ready[0] == 1
+    if implicit is not None:
+        ready = implicit.ready[0] == 1
+        stepping = True
     status, culprit = RUNNING, -1
     has_constraints = packed.constraints.kind.size > 0
     scale = length_scale(packed.constraints, q) if has_constraints else 1.0
@@ -90,9 +103,10 @@ def integrate(method, packed, tableau, controls, state, verlet, stages, workspac
         t_target = output.times[output_index]
         steps_left, nominal = 0, 0.0  # fixed-step methods split each output interval into equal steps
         while t < t_target:
-            if adaptive:
-                h = min(h_adaptive, t_target - t)
-                landing = h == t_target - t
+            if stepping:
+                # land on the output instant, also when rounding left it a hair beyond one step
+                landing = t_target - t <= h_adaptive * (1.0 + LANDING_SLACK)
+                h = t_target - t if landing else h_adaptive
             else:
                 wanted = controls.step
                 if method == CENTRAL_DIFFERENCE:
@@ -103,23 +117,33 @@ def integrate(method, packed, tableau, controls, state, verlet, stages, workspac
                     h = (t_target - t) / steps_left
                 landing = steps_left == 1
 
-            if method == CENTRAL_DIFFERENCE:
-                work_supplied, work_dissipated = central_difference_step(packed, t, h, state, workspace,
-                                                                         output.counters)
-            elif method == VELOCITY_VERLET:
-                work_supplied, work_dissipated = velocity_verlet_step(packed, t, h, state, verlet, ready, workspace,
-                                                                      output.counters)
-                ready = True
-            else:
-                status, accepted, h_adaptive, work_supplied, work_dissipated = runge_kutta_step(
-                    packed, tableau, controls, t, h, landing, h_adaptive, state, stages, ready, workspace,
+            if implicit is not None:
+                status, accepted, h_adaptive, work_supplied, work_dissipated = generalized_alpha_step(
+                    packed, controls, adaptive, t, h, landing, h_adaptive, state, implicit, ready, workspace,
                     output.counters)
                 if status != RUNNING:
                     break
+                ready = True  # a rejected step leaves the carry as it was; an accepted one holds the new state's
                 if not accepted:
-                    ready = True  # the first stage depends on the state only, not on h
                     continue
-                ready = tableau.fsal  # after acceptance, only an FSAL last stage is F at the new state
+            if verlet is not None:  # the explicit methods
+                if method == CENTRAL_DIFFERENCE:
+                    work_supplied, work_dissipated = central_difference_step(packed, t, h, state, workspace,
+                                                                             output.counters)
+                elif method == VELOCITY_VERLET:
+                    work_supplied, work_dissipated = velocity_verlet_step(packed, t, h, state, verlet, ready,
+                                                                          workspace, output.counters)
+                    ready = True
+                else:
+                    status, accepted, h_adaptive, work_supplied, work_dissipated = runge_kutta_step(
+                        packed, tableau, controls, t, h, landing, h_adaptive, state, stages, ready, workspace,
+                        output.counters)
+                    if status != RUNNING:
+                        break
+                    if not accepted:
+                        ready = True  # the first stage depends on the state only, not on h
+                        continue
+                    ready = tableau.fsal  # after acceptance, only an FSAL last stage is F at the new state
 
             if has_constraints:
                 violation = project_positions(packed.constraints, packed.inverse_mass, q_new, scale)
@@ -128,7 +152,10 @@ def integrate(method, packed, tableau, controls, state, verlet, stages, workspac
                     break
                 if method != CENTRAL_DIFFERENCE:  # its velocity is the backward difference below
                     project_velocities(packed.constraints, packed.inverse_mass, q_new, v_new)
-                ready = False
+                # the carry's F is at the state before projection: explicit methods evaluate again; generalized-α
+                # keeps its converged acceleration (the projection moves q by the step's drift, far below the
+                # Newton tolerance's effect on it)
+                ready = implicit is not None and ready
             if method == CENTRAL_DIFFERENCE:
                 central_difference_velocity(q, q_new, h, v_new)
 
@@ -139,7 +166,7 @@ def integrate(method, packed, tableau, controls, state, verlet, stages, workspac
             v[:] = v_new
             state.work[0] += work_supplied
             state.work[1] += work_dissipated
-            if adaptive:
+            if stepping:
                 t = t_target if landing else t + h
             else:
                 steps_left -= 1
@@ -153,12 +180,16 @@ def integrate(method, packed, tableau, controls, state, verlet, stages, workspac
             if worst >= 0:
                 status, culprit = PENETRATION, worst
                 break
-            if method == RUNGE_KUTTA and ready:
-                reuse_last_stage(stages)
+            if stages is not None:
+                if method == RUNGE_KUTTA and ready:
+                    reuse_last_stage(stages)
 
         if status != RUNNING:
             break
         record_output(packed, output_index, t, state, workspace, output)
         output_index += 1
-    verlet.ready[0] = 1 if (method == VELOCITY_VERLET and ready) else 0
+    if verlet is not None:
+        verlet.ready[0] = 1 if (method == VELOCITY_VERLET and ready) else 0
+    if implicit is not None:
+        implicit.ready[0] = 1 if ready else 0
     return t, h_adaptive, output_index, status, culprit

@@ -1,5 +1,6 @@
 """One shaft revolution of seed_hss_steady's dry model (its variant "dry": the primary document's friction and
-drag, penalty cage, 1500 rpm, 68 kN) on every engine, in one run.
+drag, penalty cage, 1500 rpm, 68 kN) on each engine's connectors and explicit loops, in one run: what a step costs
+on each (the implicit settings against their errors are bench_revolution.py's).
 
 Figures: wall time per revolution of
 * Exudyn generalized-alpha, compiled connector, at the step that holds the cage speed to 0.1 % (``GA_STEP``,
@@ -61,7 +62,7 @@ def main() -> dict:
             "reference_speed_up_per_step_over_exudyn_explicit": {"value": per_step, "target": ">= 5"},
         },
     }
-    write("bearing_revolution", report)
+    write("engine_step_cost", report)
     return report
 
 

@@ -1,0 +1,214 @@
+"""One shaft revolution (0.04 s at 1500 rpm) of the seed bearing with every implicit setting, against today's
+baseline and the document's scheme: cost, cage-speed error and converged slips, all measured in one run.
+
+The lubricated model (seed_hss_steady's default variant: EHL raceways, churning drag, cage on its land film,
+constraint cage) is measured first, the dry model (variant ``dry``: erf friction, penalty cage) second. Each run
+integrates 0–0.04 s from the scenario's start (load applied at t = 0) after a short warm-up (compilation
+excluded). Errors are those of docs/numerics.md, against the scenario's fine reference (``[convergence]
+reference``: RK4 at 5e-8 s lubricated, 2.5e-8 s dry) over its ``[convergence]`` window, where two correct runs
+agree instant by instant (10–20 ms lubricated; 5–15 ms dry, whose penalty cage's pocket rattle turns chaotic before
+20 ms): the mean cage speed's relative error and the largest slip-ratio error at loaded contacts. Slips are
+converged when that error is within
+:func:`bearing_mbs.studies.numerics_report.sound_slip_bound`: 1e-4, or 1 % of the reference's largest slip ratio
+where that is larger (the lubricated rollers slip by up to 6 % entering the load zone).
+
+``runs`` (one entry per setting; ``model`` says which): ``baseline`` is Exudyn generalized-alpha with its numerical
+Jacobian at h = 1e-5 s, the setting the docs recommended before this benchmark; ``document`` is the document's
+central difference at 1/1.8e6 s. ``best`` is the cheapest run of a model with cage-speed error ≤ 1e-3, converged
+slips and a successful status; ``scaling`` is each model's best setting at Z = 15, 30 and 60 rollers (the bearing
+scaled with Z at equal roller size and roller load, so each roller's physics is the same) and the exponent of
+cost ∝ Z^p fitted to it.
+
+Targets (the implicit-integrator issue): best ≥ 10× faster than baseline; Exudyn generalized-alpha with the analytic
+Jacobian ≥ 3× faster than baseline; best ≥ 100× faster than the document's scheme at equal or better cage-speed
+error. Timings are compared as ratios of one run, on a shared machine.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from bearing_mbs.engines import simulate
+from bearing_mbs.models import build_scene, load_spec
+from bearing_mbs.studies.convergence import errors, largest_slip, run_setting
+from bearing_mbs.studies.numerics_report import sound_slip_bound
+
+from common import SCENARIOS, write
+
+REVOLUTION = 2 * math.pi / (1500 * 2 * math.pi / 60)  # 0.04 s
+DOCUMENT_STEP = 1 / 1.8e6
+COMMON = [f"scenario.end_time={REVOLUTION}", "solver.output_interval=1e-4", "analysis.start=0.005"]
+TARGET_ERROR = 1e-3
+
+
+def exudyn(step: float, jacobian: str = "analytic") -> list[str]:
+    return ["solver.engine=exudyn", "solver.exudyn.method=generalized_alpha", f"solver.exudyn.step={step}",
+            f"solver.exudyn.jacobian={jacobian}"]
+
+
+def reference(method: str, step: float, tolerance: float | None = None) -> list[str]:
+    settings = ["solver.engine=reference", f"solver.reference.method={method}", f"solver.reference.step={step}"]
+    return settings + ([f"solver.reference.tolerance={tolerance}"] if tolerance else [])
+
+
+#: name → overrides, per model. The steps bracket where each setting stops meeting the 1e-3 target.
+SETTINGS = {
+    "baseline": exudyn(1e-5, "numerical"),
+    "exudyn_generalized_alpha_analytic_1e-5": exudyn(1e-5),
+    "exudyn_generalized_alpha_analytic_2e-5": exudyn(2e-5),
+    "exudyn_generalized_alpha_analytic_5e-5": exudyn(5e-5),
+    "exudyn_generalized_alpha_analytic_1e-4": exudyn(1e-4),
+    "reference_generalized_alpha_1e-5": reference("generalized_alpha", 1e-5, 1e-6),
+    "reference_generalized_alpha_2e-5": reference("generalized_alpha", 2e-5, 1e-6),
+    "reference_generalized_alpha_5e-5": reference("generalized_alpha", 5e-5, 1e-6),
+    "reference_generalized_alpha_1e-4": reference("generalized_alpha", 1e-4, 1e-6),
+    "reference_generalized_alpha_adaptive_1e-6": reference("generalized_alpha_adaptive", 1e-4, 1e-6),
+    "reference_generalized_alpha_adaptive_1e-8": reference("generalized_alpha_adaptive", 1e-4, 1e-8),
+    "document": reference("central_difference", DOCUMENT_STEP),
+}
+MODELS = ("lubricated", "dry")
+
+
+def spec_of(model: str, overrides: list[str]):
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [f"scenario.variant={model}", *COMMON, *overrides])
+    return spec, build_scene(spec)
+
+
+def fine_reference(model: str):
+    """The scenario's own fine reference run over 0 … the window's end (docs/numerics.md)."""
+    spec, scene = spec_of(model, [])
+    run = spec.convergence.reference
+    setting = (None, run.tolerances[0]) if run.adaptive else (run.steps[0], None)
+    return run_setting(spec, scene, run, *setting)
+
+
+def measure(model: str, overrides: list[str], truth, slip_bound: float) -> dict:
+    spec, scene = spec_of(model, overrides)
+    simulate(scene, spec.solver, 2e-4)  # warm-up: compilation and caches
+    result = simulate(scene, spec.solver, REVOLUTION)
+    stats = result.stats
+    norms = errors(spec, scene, result, truth) if result.success else {}
+    return {
+        "model": model,
+        "status": result.status,
+        "wall_time_s_per_revolution": stats.wall_time_s,
+        "cage_speed_error": norms.get("cage_speed", math.nan),
+        "slip_error": norms.get("slips", math.nan),
+        "slips_converged": bool(norms.get("slips", math.inf) <= slip_bound),
+        "steps": stats.steps,
+        "rejected_steps": stats.rejected_steps,
+        "newton_iterations": stats.newton_iterations,
+        "jacobian_evaluations": stats.jacobian_evaluations,
+        "force_evaluations": stats.force_evaluations,
+        "microseconds_per_step": stats.wall_time_s / max(stats.steps, 1) * 1e6,
+    }
+
+
+def sound(run: dict, error: float = TARGET_ERROR) -> bool:
+    return run["status"] == "success" and run["slips_converged"] and run["cage_speed_error"] <= error
+
+
+def cheapest(runs: dict, model: str, error: float = TARGET_ERROR, prefix: str = "") -> str | None:
+    """The cheapest sound run of ``model`` (whose name starts with ``prefix``) within ``error``; None if none is."""
+    candidates = [name for name, run in runs.items()
+                  if run["model"] == model and name.split("/")[-1].startswith(prefix) and sound(run, error)]
+    return min(candidates, key=lambda name: runs[name]["wall_time_s_per_revolution"], default=None)
+
+
+def speed_up(runs: dict, slow: str, fast: str | None) -> float | None:
+    if fast is None:
+        return None
+    return runs[slow]["wall_time_s_per_revolution"] / runs[fast]["wall_time_s_per_revolution"]
+
+
+def summarize(runs: dict, model: str) -> dict:
+    prefix = "" if model == MODELS[0] else f"{model}/"
+    best = cheapest(runs, model)
+    best_exudyn = cheapest(runs, model, prefix="exudyn_generalized_alpha_analytic")
+    document = f"{prefix}document"
+    at_document_error = cheapest(runs, model, error=runs[document]["cage_speed_error"])
+    return {
+        "best": best,
+        "best_exudyn_analytic": best_exudyn,
+        "best_at_document_error": at_document_error,
+        "speed_up_best_over_baseline": speed_up(runs, f"{prefix}baseline", best),
+        "speed_up_exudyn_analytic_over_baseline": speed_up(runs, f"{prefix}baseline", best_exudyn),
+        "speed_up_over_document_at_its_error": speed_up(runs, document, at_document_error),
+        "speed_up_best_over_document": speed_up(runs, document, best),
+    }
+
+
+def scaled_bearing(rollers: int) -> list[str]:
+    """The seed bearing with ``rollers`` rollers of the same size, its pitch circle (and rings, cage and load)
+    scaled by Z/15, so the rollers' spacing and loads are the seed bearing's."""
+    k = rollers / 15
+    pitch = 0.235 * k
+    return [f"bearing.rollers={rollers}", f"bearing.inner_race_diameter={pitch - 0.025}",
+            f"bearing.outer_race_diameter={pitch + 0.025}", f"bearing.cage_diameter={pitch + 0.010}",
+            f"bearing.inner_ring_bore={pitch - 0.075}", f"load.radial={68000.0 * k}"]
+
+
+def scaling(model: str, overrides: list[str]) -> dict:
+    figures = {}
+    for rollers in (15, 30, 60):
+        spec, scene = spec_of(model, [*overrides, *scaled_bearing(rollers)])
+        simulate(scene, spec.solver, 2e-4)
+        result = simulate(scene, spec.solver, REVOLUTION)
+        figures[str(rollers)] = {"status": result.status, "wall_time_s_per_revolution": result.stats.wall_time_s,
+                                 "steps": result.stats.steps, "coordinates": scene.coordinate_count,
+                                 "newton_iterations": result.stats.newton_iterations}
+    counts = np.array([15, 30, 60], float)
+    walls = np.array([figures[str(int(z))]["wall_time_s_per_revolution"] for z in counts])
+    exponent = float(np.polyfit(np.log(counts), np.log(walls), 1)[0])
+    return {"model": model, "overrides": overrides, "rollers": figures, "cost_exponent_in_rollers": exponent}
+
+
+def main() -> dict:
+    report = {
+        "case": "seed_hss_steady, one shaft revolution (0.04 s) from the start; lubricated (constraint cage) and dry "
+                "(penalty cage)",
+        "target_cage_speed_error": TARGET_ERROR,
+        "fine_references": {},
+        "runs": {},
+    }
+    runs = report["runs"]
+    for model in MODELS:
+        truth = fine_reference(model)
+        spec, scene = spec_of(model, [])
+        largest = largest_slip(spec, scene, truth)
+        slip_bound = sound_slip_bound(largest)
+        report["fine_references"][model] = {
+            "wall_time_s": truth.stats.wall_time_s, "steps": truth.stats.steps,
+            "error_window_s": [spec.convergence.start, spec.convergence.end], "largest_slip_ratio": largest,
+            "slip_error_bound": slip_bound}
+        for name, overrides in SETTINGS.items():
+            key = name if model == MODELS[0] else f"{model}/{name}"
+            runs[key] = measure(model, overrides, truth, slip_bound)
+            write("bearing_revolution", report)  # what is measured is kept, whatever happens next
+            print(key, {k: runs[key][k] for k in ("status", "wall_time_s_per_revolution", "cage_speed_error",
+                                                  "slips_converged")})
+    summary = report["summary"] = {model: summarize(runs, model) for model in MODELS}
+    lubricated = summary["lubricated"]
+    report["targets"] = {
+        "best_over_baseline": {"value": lubricated["speed_up_best_over_baseline"], "target": ">= 10"},
+        "exudyn_analytic_over_baseline": {"value": lubricated["speed_up_exudyn_analytic_over_baseline"],
+                                          "target": ">= 3"},
+        "best_over_document_at_equal_error": {"value": lubricated["speed_up_over_document_at_its_error"],
+                                              "target": ">= 100"},
+        "dry_best_over_baseline": {"value": summary["dry"]["speed_up_best_over_baseline"], "target": ">= 10"},
+        "dry_best_over_document_at_equal_error": {"value": summary["dry"]["speed_up_over_document_at_its_error"],
+                                                  "target": ">= 100"},
+    }
+    write("bearing_revolution", report)
+    report["scaling"] = {}
+    for model in MODELS:  # the lubricated model's constraint cage against the dry model's penalty cage
+        if summary[model]["best"] is not None:
+            report["scaling"][model] = scaling(model, SETTINGS[summary[model]["best"].split("/")[-1]])
+            write("bearing_revolution", report)
+    return report
+
+
+if __name__ == "__main__":
+    main()
