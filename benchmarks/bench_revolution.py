@@ -111,9 +111,11 @@ def sound(run: dict, error: float = TARGET_ERROR) -> bool:
 
 
 def cheapest(runs: dict, model: str, error: float = TARGET_ERROR, prefix: str = "") -> str | None:
-    """The cheapest sound run of ``model`` (whose name starts with ``prefix``) within ``error``; None if none is."""
+    """The cheapest sound run of ``model`` other than the document's scheme (whose name starts with ``prefix``)
+    within ``error``; None if none is."""
     candidates = [name for name, run in runs.items()
-                  if run["model"] == model and name.split("/")[-1].startswith(prefix) and sound(run, error)]
+                  if run["model"] == model and name.split("/")[-1].startswith(prefix) and sound(run, error)
+                  and name.split("/")[-1] != "document"]
     return min(candidates, key=lambda name: runs[name]["wall_time_s_per_revolution"], default=None)
 
 

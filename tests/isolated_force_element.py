@@ -125,7 +125,13 @@ SOLVERS = {
 }
 
 
-@pytest.mark.parametrize("solver", SOLVERS)
+#: The implicit solvers compile the reference engine's generalized-α driver once more for this module's types
+#: (about 2 minutes): they run with the long studies (``make test-slow``).
+IMPLICIT = ("reference_generalized_alpha", "exudyn_generalized_alpha")
+
+
+@pytest.mark.parametrize("solver", [pytest.param(name, marks=pytest.mark.slow) if name in IMPLICIT else name
+                                    for name in SOLVERS])
 def test_spring_oscillates_at_the_two_body_frequency(registered, solver):
     scene = oscillator()
     result = simulate(scene, SOLVERS[solver], 0.05)

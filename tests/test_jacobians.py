@@ -227,20 +227,23 @@ def test_the_lubricated_laws_slopes_match_finite_differences(k):
                                         abs=1e-9 * abs(force) / load)
 
 
+@pytest.mark.parametrize("half_width", [5e-3, np.inf])
 @pytest.mark.parametrize("entrainment, gap_rate", [(1.0, 0.0), (2.0, -1e-3), (-1.5, 2e-3), (0.3, -2e-2),
                                                    (1.0, 1e-2), (0.0, -1e-3)])
-def test_the_films_slopes_match_finite_differences(entrainment, gap_rate):
-    """∂(W, F_c, f_P)/∂(h₀, ḣ₀, u, Δu) of the cylinder–plane film, entry by entry to 1e-5 relative (the outlet's
-    table is piecewise linear, so the differences stay on one segment: steps of 1e-7 relative)."""
+def test_the_films_slopes_match_finite_differences(entrainment, gap_rate, half_width):
+    """∂(W, F_c, f_P)/∂(h₀, ḣ₀, u, Δu) of the cylinder–plane film, on a pocket wall of half width 5 mm and on an
+    unbounded plane, entry by entry to 1e-5 relative (the outlet's table is piecewise linear, so the differences stay
+    on one segment: steps of 1e-7 relative)."""
     from bearing_mbs.fluid_film.cylinder_plane import film_force_slopes, film_forces
 
     values = np.array([2e-5, gap_rate, entrainment, 0.7])  # h₀, ḣ₀, u, Δu
-    slopes = np.array(film_force_slopes(0.1, values[2], values[3], values[1], 0.0125, 0.055, 5e-3, values[0]))
+    slopes = np.array(film_force_slopes(0.1, values[2], values[3], values[1], 0.0125, 0.055, half_width, values[0]))
+    assert np.isfinite(slopes).all()
     for i in range(4):
         def film(x, i=i):
             point = values.copy()
             point[i] = x
-            return np.array(film_forces(0.1, point[2], point[3], point[1], 0.0125, 0.055, 5e-3, point[0]))
+            return np.array(film_forces(0.1, point[2], point[3], point[1], 0.0125, 0.055, half_width, point[0]))
 
         step = 1e-7 * max(abs(values[i]), 1e-3 if i == 1 else 1e-2 if i == 2 else 1e-9)
         expected = (film(values[i] + step) - film(values[i] - step)) / (2 * step)

@@ -88,7 +88,12 @@ CROSS_CHECKS = {  # (overrides, run end [s]): long enough for each to settle wit
 }
 
 
-@pytest.mark.parametrize("case", CROSS_CHECKS)
+#: Two of the light-load checks run with the long studies (``make test-slow``): the third covers that regime.
+SLOW_CROSS_CHECKS = ("light, Palmgren drag", "light, churning drag")
+
+
+@pytest.mark.parametrize("case", [pytest.param(case, marks=pytest.mark.slow) if case in SLOW_CROSS_CHECKS else case
+                                  for case in CROSS_CHECKS])
 def test_exudyn_settles_on_the_quasi_static_slip(case):
     overrides, end = CROSS_CHECKS[case]
     spec = spec_of(*overrides, f"scenario.end_time={end}", f"analysis.start={end - 0.1 if end > 0.1 else 0.05}")

@@ -192,8 +192,9 @@ def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length,
             shear_slopes[2] = shear_u  # sign(u)² = 1
     span = root * gap
     angle = np.arctan(half_width / span)
+    angle_slope = -1.0 / (span * span / half_width + half_width)  # d angle/d span: 0 on an unbounded plane
     couette_slopes = np.zeros(4)
     couette_slopes[3] = -2.0 * viscosity * length * root * angle
     couette_slopes[0] = -2.0 * viscosity * length * sliding * (
-        -root / (2.0 * gap) * angle - root * half_width / (span * span + half_width * half_width) * span / (2.0 * gap))
+        -root / (2.0 * gap) * angle + root * angle_slope * span / (2.0 * gap))
     return load_slopes, couette_slopes, shear_slopes

@@ -91,17 +91,13 @@ def _evaluate(packed, t, q, v, latched, a, workspace, counters, complete=False):
 
 @numba.njit(cache=True)
 def _projected_inverse_mass(packed, q, v):
-    """P M⁻¹ (n × n): the inverse mass, less what the constraints take (M⁻¹ without constraints)."""
-    n = q.size
-    matrix = np.diag(packed.inverse_mass)
-    count = packed.constraints.kind.size
-    if count > 0:
-        residual, gamma = np.empty(count), np.empty(count)
-        rows = np.empty((count, n))
-        constraint_rows(packed.constraints, q, v, residual, rows, gamma)
-        weighted = rows * packed.inverse_mass  # G M⁻¹
-        matrix -= weighted.T @ np.linalg.solve(weighted @ rows.T, weighted)
-    return matrix
+    """P M⁻¹ (n × n) of a scene with constraints: the inverse mass, less what the constraints take."""
+    n, count = q.size, packed.constraints.kind.size
+    residual, gamma = np.empty(count), np.empty(count)
+    rows = np.empty((count, n))
+    constraint_rows(packed.constraints, q, v, residual, rows, gamma)
+    weighted = rows * packed.inverse_mass  # G M⁻¹
+    return np.diag(packed.inverse_mass) - weighted.T @ np.linalg.solve(weighted @ rows.T, weighted)
 
 
 @numba.njit(cache=True)
@@ -113,7 +109,11 @@ def newton_matrix_inverse(packed, analytic, t, q, v, latched, slope_q, slope_v, 
         _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, True)
         element_jacobian(packed.elements, t, q, v, latched, workspace.pair_out, carry.stiffness, carry.damping)
         stiffness = slope_q * carry.stiffness + slope_v * carry.damping
-        jacobian[:, :] = -(_projected_inverse_mass(packed, q, v) @ stiffness)
+        if packed.constraints.kind.size > 0:
+            jacobian[:, :] = -(_projected_inverse_mass(packed, q, v) @ stiffness)
+        else:  # M⁻¹ is diagonal: scale the rows
+            for i in range(n):
+                jacobian[i, :] = -packed.inverse_mass[i] * stiffness[i, :]
     else:  # forward differences of f: a registered kind without an analytic Jacobian
         base, shifted = carry.base, workspace.acceleration
         _evaluate(packed, t, q, v, latched, base, workspace, counters)
