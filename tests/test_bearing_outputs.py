@@ -103,6 +103,7 @@ def test_cli_animate_writes_a_gif(tmp_path):
     assert (tmp_path / "animation.gif").stat().st_size > 0
 
 
+@pytest.mark.slow  # 25 s; the lubricated model's trends are in tests/test_lubricated_bearing.py
 def test_cage_slip_grows_as_the_load_falls():
     """Skidding at low load, as observed on wind-turbine high-speed-shaft bearings (the primary document's
     motivation and its references [25], [26], [28]): the lubricant's load-independent drag (Palmgren's M0,
