@@ -134,12 +134,17 @@ def newton_matrix_inverse(packed, analytic, t, q, v, latched, slope_q, slope_v, 
 
 
 @numba.njit(cache=True, inline="always")
-def _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v):
-    """J⁻¹ at the current iterate (q, v of ``carry.unknown``), for steps of h."""
-    n = state.q.size
-    for i in range(n):
+def _state_of(workspace, carry, slope_q, slope_v):
+    """q_{n+1}, v_{n+1} of the current iterate a = ``carry.unknown``, into ``workspace.q_new``, ``workspace.v_new``."""
+    for i in range(carry.unknown.size):
         workspace.q_new[i] = workspace.stage_q[i] + slope_q * carry.unknown[i]
         workspace.v_new[i] = workspace.stage_v[i] + slope_v * carry.unknown[i]
+
+
+@numba.njit(cache=True, inline="always")
+def _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v):
+    """J⁻¹ at the current iterate (q, v of ``carry.unknown``), for steps of h."""
+    _state_of(workspace, carry, slope_q, slope_v)
     newton_matrix_inverse(packed, controls.analytic_jacobian, t + h, workspace.q_new, workspace.v_new, state.latched,
                           slope_q, slope_v, workspace, carry, counters)
     carry.matrix_step[0] = h
@@ -186,9 +191,7 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
     while True:
         previous = np.inf
         for _ in range(ITERATIONS_PER_JACOBIAN):
-            for i in range(n):
-                q_new[i] = workspace.stage_q[i] + slope_q * a[i]
-                v_new[i] = workspace.stage_v[i] + slope_v * a[i]
+            _state_of(workspace, carry, slope_q, slope_v)
             supplied, dissipated = _evaluate(packed, t + h, q_new, v_new, latched, f, workspace, counters)
             for i in range(n):
                 f[i] = a[i] - f[i]  # the residual
@@ -211,6 +214,7 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
             a[:] = a_old  # back to the predictor
         _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v)
         formed += 1
+    _state_of(workspace, carry, slope_q, slope_v)  # the state of the converged a, its last increment included
     if not converged:  # retry at half the step
         counters[REJECTED] += 1
         h_adaptive = 0.5 * h
