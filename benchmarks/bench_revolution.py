@@ -16,8 +16,9 @@ where that is larger (the lubricated rollers slip by up to 6 % entering the load
 Jacobian at h = 1e-5 s, the setting the docs recommended before this benchmark; ``document`` is the document's
 central difference at 1/1.8e6 s. ``best`` is the cheapest run of a model with cage-speed error ≤ 1e-3, converged
 slips and a successful status; ``scaling`` is each model's best setting at Z = 15, 30 and 60 rollers (the bearing
-scaled with Z at equal roller size and roller load, so each roller's physics is the same) and the exponent of
-cost ∝ Z^p fitted to it.
+scaled with Z at equal roller size and roller load, so each roller's physics is the same), the exponent p of
+cost ∝ Z^p fitted to it, and that of the cost per force evaluation (the algorithm's work, apart from the
+evaluations and Jacobians that more rollers' contact events ask for).
 
 Targets (the implicit-integrator issue): best ≥ 10× faster than baseline; Exudyn generalized-alpha with the analytic
 Jacobian ≥ 3× faster than baseline; best ≥ 100× faster than the document's scheme at equal or better cage-speed
@@ -158,13 +159,23 @@ def scaling(model: str, overrides: list[str]) -> dict:
         spec, scene = spec_of(model, [*overrides, *scaled_bearing(rollers)])
         simulate(scene, spec.solver, 2e-4)
         result = simulate(scene, spec.solver, REVOLUTION)
-        figures[str(rollers)] = {"status": result.status, "wall_time_s_per_revolution": result.stats.wall_time_s,
-                                 "steps": result.stats.steps, "coordinates": scene.coordinate_count,
-                                 "newton_iterations": result.stats.newton_iterations}
-    counts = np.array([15, 30, 60], float)
-    walls = np.array([figures[str(int(z))]["wall_time_s_per_revolution"] for z in counts])
-    exponent = float(np.polyfit(np.log(counts), np.log(walls), 1)[0])
-    return {"model": model, "overrides": overrides, "rollers": figures, "cost_exponent_in_rollers": exponent}
+        stats = result.stats
+        figures[str(rollers)] = {"status": result.status, "wall_time_s_per_revolution": stats.wall_time_s,
+                                 "steps": stats.steps, "coordinates": scene.coordinate_count,
+                                 "newton_iterations": stats.newton_iterations,
+                                 "jacobian_evaluations": stats.jacobian_evaluations,
+                                 "force_evaluations": stats.force_evaluations,
+                                 "microseconds_per_force_evaluation": stats.wall_time_s / stats.force_evaluations * 1e6}
+    counts = np.log([15, 30, 60])
+
+    def exponent(key):
+        return float(np.polyfit(counts, np.log([figures[z][key] for z in ("15", "30", "60")]), 1)[0])
+
+    # the cost per revolution, and per force evaluation (the work of the algorithm, apart from how many
+    # evaluations and Jacobians the contact events of more rollers ask for)
+    return {"model": model, "overrides": overrides, "rollers": figures,
+            "cost_exponent_in_rollers": exponent("wall_time_s_per_revolution"),
+            "cost_per_evaluation_exponent_in_rollers": exponent("microseconds_per_force_evaluation")}
 
 
 def main() -> dict:

@@ -224,23 +224,32 @@ def test_constraint_jacobian_and_gamma_match_finite_differences(kind):
     q = q + rng.normal(scale=1e-3, size=q.size)
     v = v + rng.normal(scale=0.5, size=v.size)
     c, n = constraints.kind.size, q.size
-    residual, gamma, jacobian = np.empty(c), np.empty(c), np.empty((c, n))
-    constraint_rows(constraints, q, v, residual, jacobian, gamma)
+    residual, jacobian, gamma = dense_constraint_rows(constraints, q, v)
     eps = 1e-7
     numeric = np.empty((c, n))
     for i in range(n):
         dq = np.zeros(n)
         dq[i] = eps
-        plus, minus = np.empty(c), np.empty(c)
-        constraint_rows(constraints, q + dq, v, plus, np.empty((c, n)), np.empty(c))
-        constraint_rows(constraints, q - dq, v, minus, np.empty((c, n)), np.empty(c))
-        numeric[:, i] = (plus - minus) / (2 * eps)
+        numeric[:, i] = (dense_constraint_rows(constraints, q + dq, v)[0]
+                         - dense_constraint_rows(constraints, q - dq, v)[0]) / (2 * eps)
     np.testing.assert_allclose(jacobian, numeric, rtol=1e-6, atol=1e-9)
     # γ = −Ġq̇: d/dt (G v) along the motion with v fixed, i.e. −(G(q + εv) − G(q − εv)) v / 2ε
-    jp, jm = np.empty((c, n)), np.empty((c, n))
-    constraint_rows(constraints, q + eps * v, v, np.empty(c), jp, np.empty(c))
-    constraint_rows(constraints, q - eps * v, v, np.empty(c), jm, np.empty(c))
+    jp = dense_constraint_rows(constraints, q + eps * v, v)[1]
+    jm = dense_constraint_rows(constraints, q - eps * v, v)[1]
     np.testing.assert_allclose(gamma, -((jp - jm) / (2 * eps)) @ v, rtol=1e-5, atol=1e-6)
+
+
+def dense_constraint_rows(constraints, q, v):
+    """(g, G as a dense C × n matrix, γ) from constraint_rows' compact rows (a's three columns, then b's)."""
+    c = constraints.kind.size
+    residual, gamma, rows = np.empty(c), np.empty(c), np.empty((c, 6))
+    constraint_rows(constraints, q, v, residual, rows, gamma)
+    jacobian = np.zeros((c, q.size))
+    for k in range(c):
+        a, b = constraints.body_a[k], constraints.body_b[k]
+        jacobian[k, 3 * a:3 * a + 3] += rows[k, :3]
+        jacobian[k, 3 * b:3 * b + 3] += rows[k, 3:]
+    return residual, jacobian, gamma
 
 
 def test_palmgren_stiffness_is_used_for_the_raceways_by_default():

@@ -23,7 +23,10 @@ import record  # noqa: E402
 
 RECORDED = json.loads(record.RECORD.read_text())
 #: run -> why its accumulation order changed (empty: every run is bit for bit).
-REORDERED: dict[str, str] = {}
+REORDERED: dict[str, str] = {
+    "seed_case5": "its distance constraint's multiplier is solved by block elimination (engines/reference/"
+                  "block_elimination.py) where a dense LU solved it: the constraint forces round differently",
+}
 BITWISE = [name for name in record.RUNS if name not in REORDERED]
 RTOL = 1e-9
 
@@ -63,5 +66,6 @@ def test_numbers_match_the_record(name, arrays, tmp_path):
         _close(summary, expected["summary"], name)
         for key, value in result.items():
             reference = arrays[f"{name}/{key}"]
-            scale = np.nanmax(np.abs(reference)) if reference.size else 0.0
+            finite = np.abs(reference[np.isfinite(reference)])
+            scale = finite.max() if finite.size else 0.0
             np.testing.assert_allclose(value, reference, rtol=RTOL, atol=RTOL * scale, err_msg=f"{name}/{key}")

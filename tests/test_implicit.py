@@ -7,7 +7,9 @@ References and tolerances:
   tolerance (1e-8), so their positions agree to 1e-8 of the largest coordinate, and their cage speeds to 1e-8;
 * the reference engine's generalized-α (h = 1e-5 s, its own Newton on the same Jacobian, the constraint cage by
   projection) against the explicit RK4 at its advised step (8e-7 s, docs/numerics.md) and against Exudyn: the
-  tolerances of tests/test_bearing_engines.py, cage speed within 0.5 %, largest roller load within 1 %.
+  tolerances of tests/test_bearing_engines.py, cage speed within 0.5 %, largest roller load within 1 %;
+* the reference engine's sparse Newton step (block elimination) against the dense formula of its Newton matrix,
+  written out with numpy, on the seed bearing's own Jacobian: 1e-9 of the increment.
 """
 
 import numpy as np
@@ -60,3 +62,68 @@ def test_reference_generalized_alpha_agrees_on_the_lubricated_bearing(runs, agai
     assert implicit["max_roller_load"] == pytest.approx(other["max_roller_load"], rel=1e-2)
     stats = runs["implicit"][2].stats
     assert stats.newton_iterations >= stats.steps > 0 and stats.jacobian_evaluations > 0
+
+
+def newton_step_both_ways(scene, result, slope_q=4e-11, slope_v=1e-5):
+    """Newton's increment of the accelerations at the run's last state for a random residual r that the
+    constraints allow (G r = 0, r_λ = 0): from the engine's sparse bordered system (engines/reference/
+    block_elimination.py, via generalized_alpha.newton_increment) and from the dense formula of the index-1
+    dynamics' Newton matrix, −J⁻¹ r with J = I − P M⁻¹(β′K + γ′C), P M⁻¹ = M⁻¹ − M⁻¹Gᵀ(G M⁻¹ Gᵀ)⁻¹ G M⁻¹,
+    written out here with numpy. The slopes are β′, γ′ of a 1e-5 s step."""
+    from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
+    from bearing_mbs.elements import element_jacobian, pack_scene, scene_forces
+    from bearing_mbs.engines.reference.block_elimination import assemble_constraints, factor, subtract_stiffness
+    from bearing_mbs.engines.reference.bundles import new_implicit_carry
+    from bearing_mbs.engines.reference.constraints import constraint_rows
+    from bearing_mbs.engines.reference.engine import newton_system
+    from bearing_mbs.engines.reference.generalized_alpha import newton_increment
+
+    packed, n, c = pack_scene(scene), scene.coordinate_count, len(scene.constraints)
+    q, v = result.position[-1].copy(), result.velocity[-1].copy()
+    latched, pair_out = np.zeros(len(scene.pairs)), np.zeros((len(scene.pairs), N_PAIR_OUTPUTS))
+    scene_forces(packed, result.time[-1], q, v, latched, np.zeros(n), pair_out)
+    stiffness, damping = np.zeros((n, n)), np.zeros((n, n))
+    element_jacobian(packed.elements, result.time[-1], q, v, latched, pair_out, stiffness, damping)
+    carry = new_implicit_carry(n, newton_system(scene))
+    constraint_rows(packed.constraints, q, v, np.empty(c), carry.constraint_rows, np.empty(c))
+    assemble_constraints(carry.newton, packed.inverse_mass, carry.constraint_rows, packed.constraints.body_a,
+                         packed.constraints.body_b)
+    subtract_stiffness(carry.newton, packed.inverse_mass, stiffness, damping, slope_q, slope_v)
+    factor(carry.newton)
+    residual = np.random.default_rng(5).standard_normal(n) * (packed.inverse_mass > 0)
+    inverse_mass = np.diag(packed.inverse_mass)
+    projected = inverse_mass
+    if c:
+        g = np.zeros((c, n))
+        for k, (a, b) in enumerate(zip(packed.constraints.body_a, packed.constraints.body_b)):
+            g[k, 3 * a:3 * a + 3] += carry.constraint_rows[k, :3]
+            g[k, 3 * b:3 * b + 3] += carry.constraint_rows[k, 3:]
+        weighted = g @ inverse_mass
+        projected = inverse_mass - weighted.T @ np.linalg.solve(weighted @ g.T, weighted)
+        residual -= weighted.T @ np.linalg.solve(weighted @ g.T, g @ residual)  # G r = 0
+    newton_increment(packed, carry, residual, np.zeros(c))
+    jacobian = np.eye(n) - projected @ (slope_q * stiffness + slope_v * damping)
+    return carry.increment, -np.linalg.solve(jacobian, residual), np.abs(stiffness).max() * slope_q
+
+
+def test_the_sparse_newton_step_is_the_dense_one(runs):
+    """Reference: the dense formula (numpy), to 1e-9 of the increment's largest entry, on the lubricated seed
+    bearing (constraint cage) at 10 ms; the stiffness term must matter (β′ K / m well above rounding), or the check
+    would only test the mass."""
+    _, scene, result = runs["implicit"]
+    sparse, dense, stiffness_term = newton_step_both_ways(scene, result)
+    assert stiffness_term > 1e-3
+    np.testing.assert_allclose(sparse, dense, rtol=0, atol=1e-9 * np.abs(dense).max())
+
+
+def test_the_sparse_newton_step_is_the_dense_one_with_the_penalty_cage():
+    """The same on the dry seed bearing (penalty cage: pocket pairs couple the rollers to the cage, no
+    constraints), at 1 ms of an RK4 run."""
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", ["scenario.variant=dry", "scenario.end_time=0.001",
+                                                          "solver.output_interval=1e-3", "solver.engine=reference",
+                                                          "solver.reference.method=rk4",
+                                                          "solver.reference.step=8e-7"])
+    scene = build_scene(spec)
+    sparse, dense, stiffness_term = newton_step_both_ways(scene, simulate(scene, spec.solver, 0.001))
+    assert stiffness_term > 1e-3
+    np.testing.assert_allclose(sparse, dense, rtol=0, atol=1e-9 * np.abs(dense).max())

@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from bearing_mbs.engines.reference.block_elimination import BlockSystem
 from bearing_mbs.engines.reference.codes import COUNTERS
 from bearing_mbs.engines.reference.tableaus import ButcherTableau
 
@@ -93,9 +94,11 @@ class RungeKuttaStages(NamedTuple):
 class ImplicitCarry(NamedTuple):
     """Generalized-α's memory and scratch: the current state's acceleration a_n and auxiliary acceleration ã_n,
     its (supplied, dissipated) power [W], ``ready[0] == 1`` when they belong to the current state,
-    ``started[0] == 1`` once ã holds history; the Newton unknown and
-    increment, a base acceleration of the forward differences, the step [s] the Newton matrix was formed for
-    (inf: none yet), and the Newton matrix, its inverse and ∂F/∂q, ∂F/∂v (n × n each)."""
+    ``started[0] == 1`` once ã holds history; the Newton unknown and increment, the base forces of the forward
+    differences, the step [s] the Newton matrix was formed for (inf: none yet), the factored Newton matrix
+    (:class:`~bearing_mbs.engines.reference.block_elimination.BlockSystem`), the constraint rows it was formed
+    with (C × 6), the constraints' multipliers [N] (Newton's iterate and the accepted state's), the constraint
+    rows, gaps [m] and residual of the iterate, and ∂F/∂q, ∂F/∂v (n × n each)."""
 
     acceleration: np.ndarray
     auxiliary: np.ndarray
@@ -106,15 +109,21 @@ class ImplicitCarry(NamedTuple):
     increment: np.ndarray
     base: np.ndarray
     matrix_step: np.ndarray
-    jacobian: np.ndarray
-    inverse: np.ndarray
+    newton: BlockSystem
+    constraint_rows: np.ndarray
+    multiplier: np.ndarray
+    accepted_multiplier: np.ndarray
+    current_rows: np.ndarray
+    constraint_gap: np.ndarray
+    constraint_residual: np.ndarray
     stiffness: np.ndarray
     damping: np.ndarray
 
 
 class Workspace(NamedTuple):
     """Scratch of one step: the candidate state (q_new, v_new), a stage state, an acceleration, the
-    generalized forces, the pairs' outputs and the constraint forces [N]."""
+    generalized forces, the pairs' outputs, the constraint forces [N] and the system that solves for them
+    (:class:`~bearing_mbs.engines.reference.block_elimination.BlockSystem` of the constraints)."""
 
     q_new: np.ndarray
     v_new: np.ndarray
@@ -124,6 +133,7 @@ class Workspace(NamedTuple):
     forces: np.ndarray
     pair_out: np.ndarray
     constraint_forces: np.ndarray
+    constraint_system: BlockSystem
 
 
 class Output(NamedTuple):
@@ -151,21 +161,24 @@ def new_output(times: np.ndarray, coordinate_count: int, pair_count: int, pair_o
                   np.zeros(COUNTERS, dtype=np.int64))
 
 
-def new_workspace(coordinate_count: int, pair_count: int, pair_outputs: int, constraint_count: int) -> Workspace:
+def new_workspace(coordinate_count: int, pair_count: int, pair_outputs: int, constraint_system: BlockSystem) \
+        -> Workspace:
     n = coordinate_count
     return Workspace(np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n),
-                     np.empty((pair_count, pair_outputs)), np.empty(constraint_count))
+                     np.empty((pair_count, pair_outputs)), np.empty(constraint_system.owner.size), constraint_system)
 
 
 def new_verlet_carry(coordinate_count: int) -> VerletCarry:
     return VerletCarry(np.zeros(coordinate_count), np.zeros(2), np.zeros(1, dtype=np.int64))
 
 
-def new_implicit_carry(coordinate_count: int) -> ImplicitCarry:
+def new_implicit_carry(coordinate_count: int, newton: BlockSystem) -> ImplicitCarry:
     n = coordinate_count
+    c = newton.owner.size
     return ImplicitCarry(np.zeros(n), np.zeros(n), np.zeros(2), np.zeros(1, dtype=np.int64),
                          np.zeros(1, dtype=np.int64), np.zeros(n), np.zeros(n), np.zeros(n), np.full(1, np.inf),
-                         *(np.zeros((n, n)) for _ in range(4)))
+                         newton, np.zeros((c, 6)), np.zeros(c), np.zeros(c), np.zeros((c, 6)), np.zeros(c), np.zeros(c),
+                         np.zeros((n, n)), np.zeros((n, n)))
 
 
 def new_runge_kutta_stages(stage_count: int, coordinate_count: int) -> RungeKuttaStages:

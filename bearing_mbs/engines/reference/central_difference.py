@@ -33,8 +33,7 @@ def central_difference_step(packed, t, h, state, workspace, counters):
     """Positions at t + h into ``workspace.q_new``; returns the step's (supplied, dissipated) work [J].
     The velocity follows after the constraint projection (:func:`central_difference_velocity`)."""
     q, v, a, q_new = state.q, state.v, workspace.acceleration, workspace.q_new
-    supplied, dissipated = accelerations(packed, t, q, v, state.latched, a, workspace.forces, workspace.pair_out,
-                                         workspace.constraint_forces)
+    supplied, dissipated = accelerations(packed, t, q, v, state.latched, a, workspace)
     counters[EVALUATIONS] += 1
     for i in range(q.size):
         q_new[i] = q[i] + h * v[i] + h * h * a[i]

@@ -20,7 +20,9 @@ All kinds are written in metres. With :math:`w = c_b - c_a`, :math:`u = \dot w`,
   :math:`w = c_b`, :math:`u = \dot c_b`, and no dependence on a's translation.
 
 The tests check G and Ġq̇ against finite differences. Fixed coordinates have zero inverse mass, so neither
-forces nor projections move them.
+forces nor projections move them. Each constraint couples two bodies, so (G M⁻¹ Gᵀ) λ = r is solved as the sparse
+system of the mass and G, body block by body block (:mod:`~bearing_mbs.engines.reference.block_elimination`): its
+cost grows with the number of constraints, not with its cube.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ import numba
 import numpy as np
 
 from bearing_mbs.contact import kinematics
+from bearing_mbs.engines.reference.block_elimination import assemble_constraints, factor, solve
 
 PROJECTION_TOLERANCE = 1e-14
 MAX_PROJECTION_ITERATIONS = 20
@@ -36,14 +39,15 @@ _DISTANCE, _POINT_ON_LINE, _ORBIT = 0, 1, 2
 
 
 @numba.njit(cache=True)
-def constraint_rows(constraints, q, v, residual, jacobian, gamma):
-    """Residuals g [m], Jacobian G (C × n, overwritten) and γ = −Ġq̇ of all constraints."""
-    jacobian[:, :] = 0.0
+def constraint_rows(constraints, q, v, residual, rows, gamma):
+    """Residuals g [m], Jacobian G compact in ``rows`` (C × 6: ∂g/∂ of body a's x, y, θ, then of body b's;
+    overwritten) and γ = −Ġq̇ of all constraints."""
     for k in range(constraints.kind.size):
         a, b, kind = constraints.body_a[k], constraints.body_b[k], constraints.kind[k]
         translates = kind != _ORBIT  # an orbit is about the world origin: a's translation does not enter
         wx, wy = q[3 * b] - translates * q[3 * a], q[3 * b + 1] - translates * q[3 * a + 1]
         ux, uy = v[3 * b] - translates * v[3 * a], v[3 * b + 1] - translates * v[3 * a + 1]
+        rows[k, 2] = rows[k, 5] = 0.0
         if kind == _DISTANCE:
             length = constraints.length[k]
             residual[k] = (wx * wx + wy * wy - length * length) / (2 * length)
@@ -58,37 +62,55 @@ def constraint_rows(constraints, q, v, residual, jacobian, gamma):
             dx, dy = kinematics.body_vector(theta, constraints.direction[k, 0], constraints.direction[k, 1])
             residual[k] = dx * (q[3 * b + 1] - py) - dy * (q[3 * b] - px)
             gx, gy = -dy, dx
-            jacobian[k, 3 * a + 2] = -(dx * wx + dy * wy)
+            rows[k, 2] = -(dx * wx + dy * wy)
             gamma[k] = 2 * omega * (dx * ux + dy * uy) + omega * omega * (-dy * wx + dx * wy)
-        jacobian[k, 3 * b] = gx
-        jacobian[k, 3 * b + 1] = gy
         if translates:
-            jacobian[k, 3 * a] = -gx
-            jacobian[k, 3 * a + 1] = -gy
+            rows[k, 0], rows[k, 1] = -gx, -gy
+        else:
+            rows[k, 0] = rows[k, 1] = 0.0
+        rows[k, 3], rows[k, 4] = gx, gy
+
+
+@numba.njit(cache=True, inline="always")
+def times_rows(constraints, rows, x, k):
+    """(G x)_k, with G compact in ``rows``."""
+    a, b = 3 * constraints.body_a[k], 3 * constraints.body_b[k]
+    total = 0.0
+    for d in range(3):
+        total += rows[k, d] * x[a + d] + rows[k, 3 + d] * x[b + d]
+    return total
 
 
 @numba.njit(cache=True)
-def _solve_multipliers(inverse_mass, jacobian, right_hand_side):
-    """λ with (G M⁻¹ Gᵀ) λ = r, and the correction M⁻¹ Gᵀ λ that changes G·x by r."""
-    weighted = jacobian * inverse_mass  # G M⁻¹
-    multipliers = np.linalg.solve(weighted @ jacobian.T, right_hand_side)
-    return multipliers, weighted.T @ multipliers
+def _correction(constraints, inverse_mass, rows, system, right_hand_side):
+    """Factor the system of the mass and G, and solve it for the multipliers λ of (G M⁻¹ Gᵀ) λ = r and the
+    correction M⁻¹ Gᵀ λ that changes G·x by r (``right_hand_side``): into ``system.right_hand_side``, the
+    correction first (n), then λ."""
+    assemble_constraints(system, inverse_mass, rows, constraints.body_a, constraints.body_b)
+    factor(system)
+    n = inverse_mass.size
+    system.right_hand_side[:n] = 0.0
+    system.right_hand_side[n:] = right_hand_side
+    solve(system)
+    return system.right_hand_side[:n], system.right_hand_side[n:]
 
 
 @numba.njit(cache=True)
-def add_constraint_accelerations(constraints, inverse_mass, q, v, a):
-    """Make the accelerations ``a`` consistent with the constraints (index-1 form), in place; returns the
+def add_constraint_accelerations(constraints, inverse_mass, q, v, a, system):
+    """Make the accelerations ``a`` consistent with the constraints (index-1 form), in place, with ``system``
+    (:func:`~bearing_mbs.engines.reference.block_elimination.block_system` of the constraints); returns the
     magnitude of each constraint force on its body b [N]."""
     c = constraints.kind.size
     residual, gamma = np.empty(c), np.empty(c)
-    jacobian = np.empty((c, q.size))
-    constraint_rows(constraints, q, v, residual, jacobian, gamma)
-    multipliers, correction = _solve_multipliers(inverse_mass, jacobian, gamma - jacobian @ a)
+    rows = np.empty((c, 6))
+    constraint_rows(constraints, q, v, residual, rows, gamma)
+    for k in range(c):
+        gamma[k] -= times_rows(constraints, rows, a, k)
+    correction, multipliers = _correction(constraints, inverse_mass, rows, system, gamma)
     a += correction
     forces = np.empty(c)
     for k in range(c):
-        b = constraints.body_b[k]
-        forces[k] = abs(multipliers[k]) * np.hypot(jacobian[k, 3 * b], jacobian[k, 3 * b + 1])
+        forces[k] = abs(multipliers[k]) * np.hypot(rows[k, 3], rows[k, 4])
     return forces
 
 
@@ -103,24 +125,26 @@ def length_scale(constraints, q):
 
 
 @numba.njit(cache=True)
-def project_positions(constraints, inverse_mass, q, scale):
+def project_positions(constraints, inverse_mass, q, scale, system):
     """SHAKE-type Newton projection of q onto g(q) = 0; returns the final max |g| [m]."""
     c = constraints.kind.size
     residual, gamma = np.empty(c), np.empty(c)
-    jacobian = np.empty((c, q.size))
+    rows = np.empty((c, 6))
     for _ in range(MAX_PROJECTION_ITERATIONS):
-        constraint_rows(constraints, q, q, residual, jacobian, gamma)
+        constraint_rows(constraints, q, q, residual, rows, gamma)
         if np.max(np.abs(residual)) <= PROJECTION_TOLERANCE * scale:
             break
-        q -= _solve_multipliers(inverse_mass, jacobian, residual)[1]
+        q -= _correction(constraints, inverse_mass, rows, system, residual)[0]
     return np.max(np.abs(residual))
 
 
 @numba.njit(cache=True)
-def project_velocities(constraints, inverse_mass, q, v):
+def project_velocities(constraints, inverse_mass, q, v, system):
     """RATTLE-type projection of v onto G v = 0, in place."""
     c = constraints.kind.size
     residual, gamma = np.empty(c), np.empty(c)
-    jacobian = np.empty((c, q.size))
-    constraint_rows(constraints, q, v, residual, jacobian, gamma)
-    v -= _solve_multipliers(inverse_mass, jacobian, jacobian @ v)[1]
+    rows = np.empty((c, 6))
+    constraint_rows(constraints, q, v, residual, rows, gamma)
+    for k in range(c):
+        gamma[k] = times_rows(constraints, rows, v, k)
+    v -= _correction(constraints, inverse_mass, rows, system, gamma)[0]

@@ -13,13 +13,18 @@ from bearing_mbs.engines.reference.constraints import add_constraint_acceleratio
 
 
 @numba.njit(cache=True, inline="always")
-def accelerations(packed, t, q, v, latched, a, forces, pair_out, constraint_forces, complete=False):
-    """a = M⁻¹ f(t, q, v) + gravity [m/s², rad/s²], made consistent with the constraints (their forces [N]
-    into ``constraint_forces``). Returns (supplied, dissipated) power [W]. ``complete``: also the
-    velocity-level outputs of pairs apart (output instants only; see :func:`bearing_mbs.elements.scene_forces`)."""
-    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, pair_out, complete)
+def accelerations(packed, t, q, v, latched, a, workspace, complete=False, constrained=True):
+    """a = M⁻¹ f(t, q, v) + gravity [m/s², rad/s²], made consistent with the constraints; the generalized forces
+    [N, N, N m], the pair outputs and the constraint forces [N] into ``workspace`` (its ``forces``, ``pair_out``,
+    ``constraint_forces``; its ``constraint_system`` solves for the latter). Returns (supplied, dissipated) power
+    [W]. ``complete``: also the velocity-level outputs of pairs apart (output instants only; see
+    :func:`bearing_mbs.elements.scene_forces`). ``constrained=False``: leave the constraints out (generalized-α
+    solves for their multipliers itself)."""
+    forces = workspace.forces
+    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, workspace.pair_out, complete)
     for i in range(q.size):
         a[i] = packed.inverse_mass[i] * forces[i] + packed.gravity[i]
-    if packed.constraints.kind.size > 0:
-        constraint_forces[:] = add_constraint_accelerations(packed.constraints, packed.inverse_mass, q, v, a)
+    if constrained and packed.constraints.kind.size > 0:
+        workspace.constraint_forces[:] = add_constraint_accelerations(packed.constraints, packed.inverse_mass, q, v,
+                                                                      a, workspace.constraint_system)
     return supplied, dissipated

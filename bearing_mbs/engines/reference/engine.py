@@ -17,6 +17,7 @@ from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.elements import has_analytic_jacobian, pack_scene
 from bearing_mbs.engines.diagnosis import failure_message, output_grid
+from bearing_mbs.engines.reference.block_elimination import BlockSystem, block_system
 from bearing_mbs.engines.reference.bundles import (
     Controls,
     State,
@@ -52,6 +53,28 @@ COMPILING = ("compiling the reference engine's driver (once after an install or 
 _CHUNK_WALL_TIME = 0.2
 
 
+def _free_counts(scene: Scene) -> list[int]:
+    return [sum(body.free) for body in scene.bodies]
+
+
+def constraint_system(scene: Scene) -> BlockSystem:
+    """The system of the constraint accelerations and projections: bodies coupled by the constraints."""
+    constraints = [(c.body_a, c.body_b) for c in scene.constraints]
+    return block_system(len(scene.bodies), (), constraints, _free_counts(scene))
+
+
+def newton_system(scene: Scene) -> BlockSystem:
+    """Generalized-α's Newton system: bodies coupled by the pairs, the two-body force elements and the
+    constraints; every body with every other where a force kind has no analytic Jacobian (the forward differences
+    may couple what its items do not name)."""
+    bodies = range(len(scene.bodies))
+    couplings = [(a, b) for a in bodies for b in bodies]
+    if has_analytic_jacobian(scene):
+        couplings = [(item.body_a, item.body_b) for item in (*scene.pairs, *scene.forces) if hasattr(item, "body_a")]
+    constraints = [(c.body_a, c.body_b) for c in scene.constraints]
+    return block_system(len(scene.bodies), couplings, constraints, _free_counts(scene))
+
+
 def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
                        spec: dict | None = None, stop: StopRequest | None = None) -> Result:
     settings = solver.reference
@@ -70,10 +93,11 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     controls = Controls(float(settings.step), float(settings.contact_step or 0.0), float(settings.tolerance),
                         float(solver.speed_limit), bounds, float(settings.spectral_radius), has_analytic_jacobian(scene))
     # each kind of method gets its own carries, the other kind's are None (see integrate)
-    implicit, verlet, stages = new_implicit_carry(n), None, None
-    if method != GENERALIZED_ALPHA:
+    if method == GENERALIZED_ALPHA:
+        implicit, verlet, stages = new_implicit_carry(n, newton_system(scene)), None, None
+    else:
         implicit, verlet, stages = None, new_verlet_carry(n), new_runge_kutta_stages(tableau.b.size, n)
-    workspace = new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_count)
+    workspace = new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_system(scene))
 
     def run(t, t_stop, h_adaptive, index):
         return integrate(method, settings.adaptive, packed, tableau, controls, state, verlet, stages, implicit,
@@ -85,10 +109,9 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     def record(t):
         """The state at t as an output row (initial state, or the state where a run stopped), and its
         acceleration."""
-        acceleration, forces = np.empty(n), np.empty(n)
-        pair_out, constraint_forces = np.empty((pair_count, N_PAIR_OUTPUTS)), np.empty(constraint_count)
-        accelerations(packed, t, q, v, latched, acceleration, forces, pair_out, constraint_forces, True)
-        return t, q.copy(), v.copy(), pair_out, state.work.copy(), constraint_forces, acceleration
+        acceleration, scratch = np.empty(n), new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_system(scene))
+        accelerations(packed, t, q, v, latched, acceleration, scratch, True)
+        return t, q.copy(), v.copy(), scratch.pair_out, state.work.copy(), scratch.constraint_forces, acceleration
 
     series = [output.t, output.q, output.v, output.pairs, output.work, output.constraints]
     *initial, initial_acceleration = record(0.0)

@@ -21,16 +21,25 @@ orders buy little here: contact onsets are kinks that bring every method down to
 (``docs/numerics.md``). It is also the method of Exudyn's implicit solver, so the two engines' implicit runs
 cross-check each other independently (different code, same scheme).
 
-**Newton.** The unknown is :math:`a = a_{n+1}`; :math:`q_{n+1}` and :math:`v_{n+1}` are linear in it with
-slopes :math:`\beta' = h^2\beta(1-\alpha_f)/(1-\alpha_m)` and :math:`\gamma' = h\gamma(1-\alpha_f)/(1-\alpha_m)`.
-The residual :math:`r(a) = a - f(q(a), v(a))` has the Jacobian
-:math:`J = I - P M^{-1}(\beta' K + \gamma' C)`, with :math:`K = \partial F/\partial q` and
-:math:`C = \partial F/\partial v` (:func:`bearing_mbs.elements.element_jacobian`) and the constraints'
-projection :math:`P M^{-1} = M^{-1} - M^{-1}G^T(GM^{-1}G^T)^{-1}GM^{-1}` (the terms in :math:`\partial G/\partial
-q` are left out: they scale with the forces, not with their stiffness). A scene with a force element registered
-from outside, which has no analytic Jacobian, gets J by forward differences of f (2n evaluations). J is formed and
-inverted at the start of each step (modified Newton) and again when Newton stalls; the iteration stops when
-every coordinate's increment of position and velocity is below :data:`NEWTON_FRACTION` of its tolerance scale.
+**Newton.** The unknowns are :math:`a = a_{n+1}` and the constraints' multipliers λ; :math:`q_{n+1}` and
+:math:`v_{n+1}` are linear in a with slopes :math:`\beta' = h^2\beta(1-\alpha_f)/(1-\alpha_m)` and
+:math:`\gamma' = h\gamma(1-\alpha_f)/(1-\alpha_m)`. The residuals :math:`r = a - M^{-1}(F + G^T\lambda) - g`
+(gravity g) and :math:`r_\lambda = G a - \gamma` (the index-1 constraints, as
+:mod:`~bearing_mbs.engines.reference.constraints` writes them) have the Jacobian
+
+.. math::
+    \begin{bmatrix} M - \beta' K - \gamma' C & -G^T \\ G & 0 \end{bmatrix}
+
+(rows of r scaled by M), with :math:`K = \partial F/\partial q` and :math:`C = \partial F/\partial v`
+(:func:`bearing_mbs.elements.element_jacobian`); the terms in :math:`\partial G/\partial q` are left out (they
+scale with the forces, not with their stiffness). With the multipliers as unknowns, an iteration evaluates the
+forces alone, without the constraint solve of an explicit method's evaluation; converged, a and λ are the index-1
+accelerations of the new state. A scene with a force element registered from outside, which has no analytic
+Jacobian, gets K and C by forward differences of its forces (2n evaluations). The matrix is sparse in the bodies
+and is factored by :mod:`~bearing_mbs.engines.reference.block_elimination`, body block by body block, so its cost
+grows linearly with the rollers. It is formed and factored when the step changes (modified Newton) and again when
+Newton stalls; the iteration stops when every coordinate's increment of position and velocity is below
+:data:`NEWTON_FRACTION` of its tolerance scale.
 
 **Error and step control** (``generalized_alpha_adaptive``). The local error of the positions is estimated as
 :math:`e = (\beta - \tfrac16) h^2 (a_{n+1} - a_n)` (Zienkiewicz & Xie 1991, the Newmark family's leading term
@@ -50,6 +59,7 @@ import numba
 import numpy as np
 
 from bearing_mbs.elements import element_jacobian
+from bearing_mbs.engines.reference.block_elimination import assemble_constraints, factor, solve, subtract_stiffness
 from bearing_mbs.engines.reference.codes import (
     EVALUATIONS,
     JACOBIANS,
@@ -58,7 +68,7 @@ from bearing_mbs.engines.reference.codes import (
     RUNNING,
     STEP_UNDERFLOW,
 )
-from bearing_mbs.engines.reference.constraints import constraint_rows
+from bearing_mbs.engines.reference.constraints import constraint_rows, times_rows
 from bearing_mbs.engines.reference.dynamics import accelerations
 
 #: Newton stops when every increment is below this fraction of its coordinate's tolerance scale.
@@ -83,54 +93,81 @@ def coefficients(spectral_radius):
 
 
 @numba.njit(cache=True)  # not inlined: one compiled copy of the force kernels serves every call below
-def _evaluate(packed, t, q, v, latched, a, workspace, counters, complete=False):
+def _evaluate(packed, t, q, v, latched, a, workspace, counters, complete=False, constrained=True):
     counters[EVALUATIONS] += 1
-    return accelerations(packed, t, q, v, latched, a, workspace.forces, workspace.pair_out,
-                         workspace.constraint_forces, complete)
+    return accelerations(packed, t, q, v, latched, a, workspace, complete, constrained)
 
 
 @numba.njit(cache=True)
-def _projected_inverse_mass(packed, q, v):
-    """P M⁻¹ (n × n) of a scene with constraints: the inverse mass, less what the constraints take."""
-    n, count = q.size, packed.constraints.kind.size
-    residual, gamma = np.empty(count), np.empty(count)
-    rows = np.empty((count, n))
-    constraint_rows(packed.constraints, q, v, residual, rows, gamma)
-    weighted = rows * packed.inverse_mass  # G M⁻¹
-    return np.diag(packed.inverse_mass) - weighted.T @ np.linalg.solve(weighted @ rows.T, weighted)
-
-
-@numba.njit(cache=True)
-def newton_matrix_inverse(packed, analytic, t, q, v, latched, slope_q, slope_v, workspace, carry, counters):
-    """J⁻¹ with J = I − (β' ∂f/∂q + γ' ∂f/∂v) at (t, q, v), into ``carry.inverse``."""
+def form_newton_matrix(packed, analytic, t, q, v, latched, slope_q, slope_v, workspace, carry, counters):
+    """Newton's matrix at (t, q, v) (mass less β' ∂F/∂q + γ' ∂F/∂v, bordered by the constraints' G: the module's
+    docstring), formed as the sparse system of :mod:`~bearing_mbs.engines.reference.block_elimination` and
+    factored into ``carry.newton``; the G it used into ``carry.constraint_rows``."""
     n = q.size
-    jacobian = carry.jacobian
+    stiffness, damping = carry.stiffness, carry.damping
     if analytic:  # the complete pair outputs the Jacobian reads
         _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, True)
-        element_jacobian(packed.elements, t, q, v, latched, workspace.pair_out, carry.stiffness, carry.damping)
-        stiffness = slope_q * carry.stiffness + slope_v * carry.damping
-        if packed.constraints.kind.size > 0:
-            jacobian[:, :] = -(_projected_inverse_mass(packed, q, v) @ stiffness)
-        else:  # M⁻¹ is diagonal: scale the rows
-            for i in range(n):
-                jacobian[i, :] = -packed.inverse_mass[i] * stiffness[i, :]
-    else:  # forward differences of f: a registered kind without an analytic Jacobian
-        base, shifted = carry.base, workspace.acceleration
-        _evaluate(packed, t, q, v, latched, base, workspace, counters)
+        element_jacobian(packed.elements, t, q, v, latched, workspace.pair_out, stiffness, damping)
+    else:  # forward differences of the forces: a registered kind without an analytic Jacobian
+        base, shifted = carry.base, workspace.forces
+        _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, False, False)
+        base[:] = shifted
         for j in range(2 * n):
             column = j % n
             x = q if j < n else v
             saved = x[column]
             delta = DIFFERENCE_STEP * max(1.0, abs(saved))
             x[column] = saved + delta
-            _evaluate(packed, t, q, v, latched, shifted, workspace, counters)
+            _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, False, False)
             x[column] = saved
-            slope = slope_q if j < n else slope_v
+            target = stiffness if j < n else damping
             for i in range(n):
-                jacobian[i, column] = (jacobian[i, column] if j >= n else 0.0) - slope * (shifted[i] - base[i]) / delta
+                target[i, column] = (shifted[i] - base[i]) / delta
+    constraints = packed.constraints
+    residual, gamma = np.empty(constraints.kind.size), np.empty(constraints.kind.size)
+    constraint_rows(constraints, q, v, residual, carry.constraint_rows, gamma)
+    assemble_constraints(carry.newton, packed.inverse_mass, carry.constraint_rows, constraints.body_a,
+                         constraints.body_b)
+    subtract_stiffness(carry.newton, packed.inverse_mass, stiffness, damping, slope_q, slope_v)
+    factor(carry.newton)
+
+
+@numba.njit(cache=True)
+def newton_increment(packed, carry, residual, constraint_residual):
+    """Newton's increments of the accelerations, into ``carry.increment``, and of the multipliers, added to
+    ``carry.multiplier``: the factored system solved with −M r on the free coordinates, −r on the fixed ones and
+    −r_λ on the constraints (``residual`` r, ``constraint_residual`` r_λ: see :func:`newton_residual`)."""
+    n, system = residual.size, carry.newton
+    right_hand_side = system.right_hand_side
     for i in range(n):
-        jacobian[i, i] += 1.0
-    carry.inverse[:, :] = np.linalg.inv(jacobian)
+        w = packed.inverse_mass[i]
+        right_hand_side[i] = -residual[i] / w if w > 0.0 else -residual[i]
+    for k in range(constraint_residual.size):
+        right_hand_side[n + k] = -constraint_residual[k]
+    solve(system)
+    carry.increment[:] = right_hand_side[:n]
+    for k in range(constraint_residual.size):
+        carry.multiplier[k] += right_hand_side[n + k]
+
+
+@numba.njit(cache=True, inline="always")
+def newton_residual(packed, carry, free, q, v):
+    """r = a − M⁻¹(F + Gᵀλ) − g into ``free`` (which holds M⁻¹F + g at (q, v) on entry) and r_λ = G a − γ into
+    ``carry.constraint_residual``, for the iterate a = ``carry.unknown``, λ = ``carry.multiplier``."""
+    a, constraints = carry.unknown, packed.constraints
+    for i in range(a.size):
+        free[i] = a[i] - free[i]
+    if constraints.kind.size == 0:
+        return
+    rows = carry.current_rows
+    constraint_rows(constraints, q, v, carry.constraint_gap, rows, carry.constraint_residual)
+    for k in range(constraints.kind.size):
+        for side in range(2):
+            body = constraints.body_a[k] if side == 0 else constraints.body_b[k]
+            for d in range(3):
+                i = 3 * body + d
+                free[i] -= packed.inverse_mass[i] * rows[k, 3 * side + d] * carry.multiplier[k]
+        carry.constraint_residual[k] = times_rows(constraints, rows, a, k) - carry.constraint_residual[k]
 
 
 @numba.njit(cache=True, inline="always")
@@ -143,10 +180,10 @@ def _state_of(workspace, carry, slope_q, slope_v):
 
 @numba.njit(cache=True, inline="always")
 def _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v):
-    """J⁻¹ at the current iterate (q, v of ``carry.unknown``), for steps of h."""
+    """J at the current iterate (q, v of ``carry.unknown``), for steps of h."""
     _state_of(workspace, carry, slope_q, slope_v)
-    newton_matrix_inverse(packed, controls.analytic_jacobian, t + h, workspace.q_new, workspace.v_new, state.latched,
-                          slope_q, slope_v, workspace, carry, counters)
+    form_newton_matrix(packed, controls.analytic_jacobian, t + h, workspace.q_new, workspace.v_new, state.latched,
+                       slope_q, slope_v, workspace, carry, counters)
     carry.matrix_step[0] = h
     counters[JACOBIANS] += 1
 
@@ -169,8 +206,10 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         carry.increment
     n = q.size
     tolerance = controls.tolerance
+    multiplier, accepted_multiplier = carry.multiplier, carry.accepted_multiplier
     if not ready:
         power[0], power[1] = _evaluate(packed, t, q, v, latched, a_old, workspace, counters)
+        accepted_multiplier[:] = workspace.constraint_system.right_hand_side[n:]  # its λ (constraints.py)
         if carry.started[0] == 0:  # ã_0 = a_0
             auxiliary[:] = a_old
             carry.started[0] = 1
@@ -183,6 +222,7 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         workspace.stage_q[i] = q[i] + h * v[i] + h * h * ((0.5 - beta) * auxiliary[i] + beta * fixed_auxiliary)
         workspace.stage_v[i] = v[i] + h * ((1.0 - gamma) * auxiliary[i] + gamma * fixed_auxiliary)
         a[i] = a_old[i]  # the predictor
+    multiplier[:] = accepted_multiplier
     supplied = dissipated = 0.0
     formed, converged = 0, False
     if not 1.0 / REUSE_RATIO <= h / carry.matrix_step[0] <= REUSE_RATIO:  # J of another step: form it
@@ -192,10 +232,11 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         previous = np.inf
         for _ in range(ITERATIONS_PER_JACOBIAN):
             _state_of(workspace, carry, slope_q, slope_v)
-            supplied, dissipated = _evaluate(packed, t + h, q_new, v_new, latched, f, workspace, counters)
-            for i in range(n):
-                f[i] = a[i] - f[i]  # the residual
-            increment[:] = -(carry.inverse @ f)
+            # the constraints' multipliers are Newton's unknowns too: no constraint solve per iteration
+            supplied, dissipated = _evaluate(packed, t + h, q_new, v_new, latched, f, workspace, counters, False,
+                                             False)
+            newton_residual(packed, carry, f, q_new, v_new)
+            newton_increment(packed, carry, f, carry.constraint_residual)
             size = 0.0
             for i in range(n):
                 a[i] += increment[i]
@@ -212,6 +253,7 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
             break
         if not math.isfinite(size):
             a[:] = a_old  # back to the predictor
+            multiplier[:] = accepted_multiplier
         _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v)
         formed += 1
     _state_of(workspace, carry, slope_q, slope_v)  # the state of the converged a, its last increment included
@@ -240,5 +282,6 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
     for i in range(n):
         auxiliary[i] = ((1.0 - alpha_f) * a[i] + alpha_f * a_old[i] - alpha_m * auxiliary[i]) / (1.0 - alpha_m)
         a_old[i] = a[i]
+    accepted_multiplier[:] = multiplier
     power[0], power[1] = supplied, dissipated
     return RUNNING, True, h_adaptive, work_supplied, work_dissipated

@@ -64,8 +64,7 @@ def record_output(packed, index, t, state, workspace, output):
     output.t[index] = t
     output.q[index] = state.q
     output.v[index] = state.v
-    accelerations(packed, t, state.q, state.v, state.latched, workspace.acceleration, workspace.forces,
-                  workspace.pair_out, workspace.constraint_forces, True)
+    accelerations(packed, t, state.q, state.v, state.latched, workspace.acceleration, workspace, True)
     output.pairs[index] = workspace.pair_out
     output.work[index] = state.work
     output.constraints[index] = workspace.constraint_forces
@@ -146,12 +145,14 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                     ready = tableau.fsal  # after acceptance, only an FSAL last stage is F at the new state
 
             if has_constraints:
-                violation = project_positions(packed.constraints, packed.inverse_mass, q_new, scale)
+                violation = project_positions(packed.constraints, packed.inverse_mass, q_new, scale,
+                                              workspace.constraint_system)
                 if not violation <= PROJECTION_ACCEPTANCE * scale:
                     status = PROJECTION_FAILED
                     break
                 if method != CENTRAL_DIFFERENCE:  # its velocity is the backward difference below
-                    project_velocities(packed.constraints, packed.inverse_mass, q_new, v_new)
+                    project_velocities(packed.constraints, packed.inverse_mass, q_new, v_new,
+                                       workspace.constraint_system)
                 # the carry's F is at the state before projection: explicit methods evaluate again; generalized-α
                 # keeps its converged acceleration (the projection moves q by the step's drift, far below the
                 # Newton tolerance's effect on it)

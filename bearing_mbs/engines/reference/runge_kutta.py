@@ -38,8 +38,7 @@ def runge_kutta_stages(packed, tableau, t, h, state, stages, first_ready, worksp
                 velocity += h * a[i, j] * kv[j, m]
             stage_q[m], stage_v[m] = position, velocity
             kq[i, m] = velocity
-        kp[i, 0], kp[i, 1] = accelerations(packed, t + c[i] * h, stage_q, stage_v, latched, kv[i], workspace.forces,
-                                           workspace.pair_out, workspace.constraint_forces)
+        kp[i, 0], kp[i, 1] = accelerations(packed, t + c[i] * h, stage_q, stage_v, latched, kv[i], workspace)
         counters[EVALUATIONS] += 1
     for m in range(n):
         position, velocity = q[m], v[m]

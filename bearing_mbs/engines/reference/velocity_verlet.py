@@ -26,15 +26,13 @@ def velocity_verlet_step(packed, t, h, state, carry, ready, workspace, counters)
     a, power = carry.acceleration, carry.power
     q_new, v_new, predicted_v = workspace.q_new, workspace.v_new, workspace.stage_v
     if not ready:
-        power[0], power[1] = accelerations(packed, t, q, v, latched, a, workspace.forces, workspace.pair_out,
-                                           workspace.constraint_forces)
+        power[0], power[1] = accelerations(packed, t, q, v, latched, a, workspace)
         counters[EVALUATIONS] += 1
     for i in range(q.size):
         v_new[i] = v[i] + 0.5 * h * a[i]  # half kick
         q_new[i] = q[i] + h * v_new[i]  # drift
         predicted_v[i] = v_new[i] + 0.5 * h * a[i]  # predicted end velocity
-    supplied, dissipated = accelerations(packed, t + h, q_new, predicted_v, latched, a, workspace.forces,
-                                         workspace.pair_out, workspace.constraint_forces)
+    supplied, dissipated = accelerations(packed, t + h, q_new, predicted_v, latched, a, workspace)
     counters[EVALUATIONS] += 1
     for i in range(q.size):
         v_new[i] += 0.5 * h * a[i]  # second half kick
