@@ -18,7 +18,10 @@ last, which keeps the fill, and so the cost, linear in the number of rollers, wh
 (:func:`assemble_constraints`, :func:`subtract_stiffness`), factor them (:func:`factor`: block LU, Gauss–Jordan with
 partial pivoting within each diagonal block, none between blocks) and solve (:func:`solve`), with no allocation.
 The diagonal blocks are a body's mass plus β′ times its contact stiffness, bordered by the rows of its
-constraints; every constraint kind moves its body b (∂g/∂c_b ≠ 0), so they are invertible.
+constraints; every constraint kind moves its body b (∂g/∂c_b ≠ 0), so they are invertible. Without pivoting
+between blocks the error can grow beyond a pivoted LU's on indefinite systems: on random ones (tests) 99.9 % solve
+within 2 × condition number × rounding, the worst within 2e3 ×; the mass-dominated systems of a bearing solve as
+accurately as a dense LU. (scipy's sparse LU cannot be called from the compiled driver.)
 """
 
 from __future__ import annotations
@@ -143,7 +146,7 @@ def _size(system, p):
     return system.member_start[p + 1] - system.member_start[p]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def assemble_constraints(system, inverse_mass, rows, body_a, body_b):
     """Fill the blocks with the mass (identity on fixed coordinates) and the constraints' G, compact in ``rows``
     (C × 6: the columns of a's coordinates, then b's; see :func:`~bearing_mbs.engines.reference.constraints.
@@ -226,7 +229,7 @@ def _invert(values, start, size, pivot):
                 values[a], values[b] = values[b], values[a]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def factor(system):
     """Block LU in place: each diagonal block becomes its (Schur-updated) inverse D⁻¹, each block (i, p) below it
     L_ip = A_ip D⁻¹; the blocks (p, j) above stay."""
@@ -237,26 +240,28 @@ def factor(system):
         for a in range(system.later_start[p], system.later_start[p + 1]):
             i = system.later[a]
             below, rows = system.offset[i, p], _size(system, i)
-            for r in range(rows):  # L_ip = A_ip D⁻¹, through the scratch
-                for c in range(size):
-                    total = 0.0
-                    for m in range(size):
-                        total += values[below + r * size + m] * values[diagonal + m * size + c]
-                    scratch[r * size + c] = total
+            for m in range(rows * size):
+                scratch[m] = 0.0
+            for r in range(rows):  # L_ip = A_ip D⁻¹ through the scratch, by rows: the blocks are mostly zeros
+                for m in range(size):
+                    entry = values[below + r * size + m]
+                    if entry != 0.0:
+                        for c in range(size):
+                            scratch[r * size + c] += entry * values[diagonal + m * size + c]
             for m in range(rows * size):
                 values[below + m] = scratch[m]
             for b in range(system.later_start[p], system.later_start[p + 1]):  # A_ij −= L_ip A_pj
                 j = system.later[b]
                 above, target, columns = system.offset[p, j], system.offset[i, j], _size(system, j)
-                for r in range(rows):
+                for m in range(size):
                     for c in range(columns):
-                        total = 0.0
-                        for m in range(size):
-                            total += values[below + r * size + m] * values[above + m * columns + c]
-                        values[target + r * columns + c] -= total
+                        entry = values[above + m * columns + c]
+                        if entry != 0.0:
+                            for r in range(rows):
+                                values[target + r * columns + c] -= values[below + r * size + m] * entry
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def solve(system):
     """Solve the factored system for ``system.right_hand_side``, in place (the unknowns replace it)."""
     start, values, y = system.member_start, system.values, system.permuted

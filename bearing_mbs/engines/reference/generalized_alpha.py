@@ -106,7 +106,7 @@ def form_newton_matrix(packed, analytic, t, q, v, latched, slope_q, slope_v, wor
     n = q.size
     stiffness, damping = carry.stiffness, carry.damping
     if analytic:  # the complete pair outputs the Jacobian reads
-        _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, True)
+        _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, True, False)
         element_jacobian(packed.elements, t, q, v, latched, workspace.pair_out, stiffness, damping)
     else:  # forward differences of the forces: a registered kind without an analytic Jacobian
         base, shifted = carry.base, workspace.forces
@@ -123,9 +123,8 @@ def form_newton_matrix(packed, analytic, t, q, v, latched, slope_q, slope_v, wor
             target = stiffness if j < n else damping
             for i in range(n):
                 target[i, column] = (shifted[i] - base[i]) / delta
-    constraints = packed.constraints
-    residual, gamma = np.empty(constraints.kind.size), np.empty(constraints.kind.size)
-    constraint_rows(constraints, q, v, residual, carry.constraint_rows, gamma)
+    constraints = packed.constraints  # the iterate's gap and residual arrays serve as scratch here
+    constraint_rows(constraints, q, v, carry.constraint_gap, carry.constraint_rows, carry.constraint_residual)
     assemble_constraints(carry.newton, packed.inverse_mass, carry.constraint_rows, constraints.body_a,
                          constraints.body_b)
     subtract_stiffness(carry.newton, packed.inverse_mass, stiffness, damping, slope_q, slope_v)
