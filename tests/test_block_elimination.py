@@ -2,8 +2,9 @@
 
 Reference: numpy's LU (``np.linalg.solve``) of the same system written out densely here from its definition
 (mass, stiffness on the coupled bodies' blocks, constraint rows; identity rows on fixed coordinates), to 1e-10 of
-the solution, or 1e4 × the condition number × the rounding where that is larger (see the test). The structural check: on a bearing's coupling graph the stored blocks grow linearly with the number of
-rollers (a dense elimination grows with its square).
+the solution, or 1e4 × the condition number × the rounding where that is larger (see the test). The structural
+check: on a bearing's coupling graph the stored blocks grow linearly with the number of rollers (a dense
+elimination grows with its square).
 """
 
 from __future__ import annotations
