@@ -43,7 +43,8 @@ def cage_slip(land_clearance: float, joint: str) -> float:
     return bearing_metrics(spec, scene, result)["cage_slip"]
 
 
-@pytest.mark.parametrize("joint, moves", [("orbit", False), ("point_on_line", True)])
+@pytest.mark.parametrize("joint, moves", [("orbit", False),
+                                          pytest.param("point_on_line", True, marks=pytest.mark.slow)])
 def test_cage_slip_against_the_land_clearance(joint, moves):
     small, large = (cage_slip(clearance, joint) for clearance in CLEARANCES)
     if moves:

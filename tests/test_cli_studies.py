@@ -36,6 +36,7 @@ def test_skidding_writes_the_sweep(tmp_path, capsys):
     assert "constraint cage: slip" in capsys.readouterr().out
 
 
+@pytest.mark.slow  # 12 s, in `make test-slow`; the sweep above keeps the skidding command in the default suite
 def test_skidding_map_writes_the_grid_and_its_figures(tmp_path, capsys):
     out = tmp_path / "map"
     code = main(["skidding-map", str(STEADY), "--out", str(out), "--loads",

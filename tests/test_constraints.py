@@ -79,6 +79,7 @@ def test_case5_projection_holds_the_constraint_to_round_off(case5_reference, met
     assert result.pair_series("normal_force").max() > 0  # the balls did hit the walls
 
 
+@pytest.mark.slow  # 12 s, in `make test-slow`; case 5 on the reference engine stays in the default suite
 def test_case5_exudyn_joint_agrees_with_the_projection_scheme(case5_reference):
     scene, reference = case5_reference
     assert reference.success and constraint_violation(scene, reference).max() < 1e-14 * scene.constraints[0].length
