@@ -2,7 +2,8 @@
 
 Code that reacts to a failure compares kinds, never message text (as diffrax's ``RESULTS`` and scipy's
 ``OdeResult.status``). The message of a result is made from its kind and the state where the run stopped.
-The integer values are also the status codes the compiled reference integrator returns.
+The integer values are also the status codes the compiled reference integrator returns; a kind prints as its
+name (``print(result.failure)`` gives ``blowup``), and summaries write that name (``failure``).
 """
 
 from __future__ import annotations
@@ -36,4 +37,11 @@ class Failure(enum.IntEnum):
 
     @property
     def label(self) -> str:
+        """The kind's name as summaries write it: ``none``, ``nonfinite``, ``blowup``…"""
         return self.name.lower()
+
+    def __str__(self) -> str:  # an IntEnum prints as its integer otherwise: a user reads the kind's name
+        return self.label
+
+    def __format__(self, spec: str) -> str:
+        return format(self.label, spec)

@@ -98,6 +98,18 @@ class Result:
         return self.status == SUCCESS
 
     @property
+    def status_note(self) -> str | None:
+        """What a figure of this result must say about it: None for ``success``; else the status with the failed
+        checks, or where and why the run stopped."""
+        status = self.status
+        if status == SUCCESS:
+            return None
+        if status == SUSPECT:
+            return f"{status}: failed checks: {', '.join(check.name for check in self.failed_checks)}"
+        stopped = f" at t = {float(self.time[-1]):.6g} s" if self.time.size else ""
+        return f"{status}{stopped} ({self.failure}): the numbers reach the stop only"
+
+    @property
     def failed_checks(self) -> tuple[Check, ...]:
         return tuple(check for check in self.checks if not check.passed)
 

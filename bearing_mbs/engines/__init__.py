@@ -19,15 +19,16 @@ from bearing_mbs.spec.solver import SolverSpec
 
 
 def simulate(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
-             spec: dict | None = None) -> Result:
+             spec: dict | None = None, step_advice: str | None = None) -> Result:
     """Run ``scene`` from 0 to ``end_time`` [s] with the engine and settings of ``solver``; SIGINT and SIGTERM
     stop it with what it computed (inside a caller's :func:`~bearing_mbs.core.interrupt.stop_on_signals` block,
-    that block's request)."""
+    that block's request). ``step_advice``: the words of the fix that changes the step, quoted by a failure's
+    message (:func:`bearing_mbs.runner.simulate_advised` passes the step advisor's; engines know no model)."""
     request = active_request()
     if request is None:
         with stop_on_signals(StopRequest()) as request:
-            return _simulate(scene, solver, end_time, progress, spec, request)
-    return _simulate(scene, solver, end_time, progress, spec, request)
+            return _simulate(scene, solver, end_time, progress, spec, request, step_advice)
+    return _simulate(scene, solver, end_time, progress, spec, request, step_advice)
 
 
 def check_supported(scene: Scene, solver: SolverSpec) -> None:
@@ -39,14 +40,14 @@ def check_supported(scene: Scene, solver: SolverSpec) -> None:
         exudyn_check(scene, solver)
 
 
-def _simulate(scene, solver, end_time, progress, spec, stop) -> Result:
+def _simulate(scene, solver, end_time, progress, spec, stop, step_advice) -> Result:
     if solver.engine == "reference":
         from bearing_mbs.engines.reference.engine import simulate_reference
 
-        return simulate_reference(scene, solver, end_time, progress, spec, stop)
+        return simulate_reference(scene, solver, end_time, progress, spec, stop, step_advice)
     from bearing_mbs.engines.exudyn.engine import simulate_exudyn
 
-    return simulate_exudyn(scene, solver, end_time, progress, spec, stop)
+    return simulate_exudyn(scene, solver, end_time, progress, spec, stop, step_advice)
 
 
 __all__ = ["check_supported", "simulate"]

@@ -141,11 +141,6 @@ class StepAgainstLimit:
     def exceeded(self) -> bool:
         return self.step > self.limit
 
-    def fix(self) -> str:
-        """The likely fix, naming the value: the recommended step, or the implicit solver to switch to."""
-        step = f"use a step <= {self.recommended:.2g} s" if self.recommended else "use another solver"
-        return f"{step}, or Exudyn's generalized_alpha (implicit: no such limit)"
-
 
 def step_against_limit(scene: Scene, solver) -> StepAgainstLimit | None:
     """The run's fixed explicit step against the advised limit, or None where no limit applies (adaptive or
@@ -155,14 +150,92 @@ def step_against_limit(scene: Scene, solver) -> StepAgainstLimit | None:
         return None
     if solver.engine == "exudyn" and settings.connector == "native":
         return None  # Exudyn's sphere contacts lag their friction state one step: another stability problem
-    step = settings.step
-    if solver.engine == "reference" and settings.method == "central_difference" and settings.contact_step:
-        step = settings.contact_step  # the step while contacts are closed, i.e. always in a bearing
     advice = advise(scene)
     limit, mode = advice.limit_and_mode(solver.engine, settings.method)
     if limit is None:
         return None
-    return StepAgainstLimit(step, limit, advice.recommended(solver.engine, settings.method), mode)
+    return StepAgainstLimit(_fixed_step(solver), limit, advice.recommended(solver.engine, settings.method), mode)
+
+
+def _fixed_step(solver) -> float:
+    """The step [s] a fixed-step run takes while its contacts are closed: central difference's contact step if it
+    has one (always closed in a bearing), else its step."""
+    settings = solver.active
+    if solver.engine == "reference" and settings.method == "central_difference" and settings.contact_step:
+        return settings.contact_step
+    return settings.step
+
+
+#: A step within the advice is divided by this when a run still needs a finer one (an energy audit that does not
+#: close, a penetration, a divergence below the stability limit) [-].
+REFINEMENT = 4.0
+#: An adaptive method's tolerance is divided by this instead [-].
+TOLERANCE_REFINEMENT = 100.0
+
+
+@dataclass(frozen=True)
+class StepAdvice:
+    """The one step advice of a run: every message that advises a step or a tolerance quotes it (the
+    divergence and penetration messages, the ``step_limit``, ``energy_audit`` and ``spurious_slip`` checks, the
+    step warning), so they never disagree.
+
+    Set ``field`` (a spec path) from ``current`` to ``value`` (at most; [s] for a step, [-] for a tolerance).
+    ``limit`` [s] is the step advisor's stability limit for the run's method and scene (None where none applies:
+    adaptive and implicit methods, a scene no model linearises), set by ``mode``; ``value`` never exceeds it, so
+    following the advice passes the ``step_limit`` check. ``explicit``: the method has a stability limit at all,
+    so switching to the implicit solver is an alternative. ``reason``: why there is no limit, when there is none.
+    """
+
+    field: str
+    current: float
+    value: float
+    limit: float | None = None
+    mode: str = ""
+    explicit: bool = True
+    reason: str = ""
+
+    @property
+    def tolerance(self) -> bool:
+        return self.field.endswith(".tolerance")
+
+    def text(self) -> str:
+        """The advice in words: the value to set, the advisor's limit it respects, and the alternative."""
+        if self.tolerance:
+            return f"tighten {self.field} from {self.current:g} to {self.value:g}"
+        if self.limit is not None:
+            words = (f"set {self.field} to {self.value:.2g} s or less (now {self.current:g} s; the step advisor's "
+                     f"stability limit for this method and scene is {self.limit:.3g} s, set by {self.mode})")
+        else:
+            words = f"reduce {self.field} from {self.current:g} s to {self.value:g} s ({self.reason})"
+        return words + (", or switch to Exudyn's generalized_alpha (implicit: no stability limit)"
+                        if self.explicit else "")
+
+    def to_dict(self) -> dict:
+        return {"field": self.field, "current": self.current, "value": self.value, "limit": self.limit,
+                "set_by": self.mode}
+
+
+def step_advice(scene: Scene, solver) -> StepAdvice:
+    """The step advice for running ``scene`` with ``solver`` (:class:`StepAdvice`): within the advisor's
+    stability limit, the recommended step when the run's step exceeds it, else :data:`REFINEMENT` times finer;
+    an adaptive method's tolerance :data:`TOLERANCE_REFINEMENT` times tighter."""
+    settings = solver.active
+    prefix = f"solver.{solver.engine}"
+    if settings.adaptive:
+        return StepAdvice(f"{prefix}.tolerance", settings.tolerance, settings.tolerance / TOLERANCE_REFINEMENT,
+                          explicit=not settings.implicit)
+    step = _fixed_step(solver)
+    name = "contact_step" if step != settings.step else "step"
+    if settings.implicit:
+        return StepAdvice(f"{prefix}.{name}", step, step / REFINEMENT, explicit=False,
+                          reason=f"{settings.method} has no stability limit; a shorter step resolves the dynamics "
+                                 "better")
+    against = step_against_limit(scene, solver)
+    if against is None or against.recommended is None:
+        why = advise(scene).reason or "the step advisor has no stability limit for this method"
+        return StepAdvice(f"{prefix}.{name}", step, step / REFINEMENT, reason=why)
+    value = against.recommended if step > against.recommended else step / REFINEMENT
+    return StepAdvice(f"{prefix}.{name}", step, value, against.limit, against.mode)
 
 
 def step_warning(scene: Scene, solver) -> str | None:
@@ -172,4 +245,5 @@ def step_warning(scene: Scene, solver) -> str | None:
         return None
     return (f"{scene.name}: the {solver.engine} {solver.active.method} step {check.step:.3g} s exceeds the advised "
             f"stability limit {check.limit:.3g} s, set by {check.mode}: above it a run may stay bounded but slip "
-            f"wrongly (a spurious skidding cycle). Likely fix: {check.fix()} (see `bearing-mbs advise`).")
+            f"wrongly (a spurious skidding cycle). Likely fix: {step_advice(scene, solver).text()} "
+            f"(see `bearing-mbs advise`).")

@@ -20,7 +20,7 @@ from bearing_mbs.elements import scene_counts
 from bearing_mbs.engines import simulate
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models import MODELS, build_scene
-from bearing_mbs.numerics.advisor import step_warning
+from bearing_mbs.numerics.advisor import step_advice, step_warning
 from bearing_mbs.runner.checks import run_checks
 from bearing_mbs.runner.outputs import SUMMARY_FILE, Staging
 from bearing_mbs.runner.units import RUN_UNITS
@@ -80,10 +80,11 @@ def require_initial_speeds_within_limit(scene: Scene, solver: SolverSpec) -> Non
 
 def simulate_advised(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
                      spec: dict | None = None) -> Result:
-    """:func:`bearing_mbs.engines.simulate`, with the step advisor's warning when a fixed explicit step exceeds
-    the advised stability limit: logged, and recorded in ``result.metadata["warnings"]``."""
+    """:func:`bearing_mbs.engines.simulate` with the step advisor's voice: a failure that a smaller step may fix
+    quotes the run's step advice (:func:`bearing_mbs.numerics.advisor.step_advice`), and a fixed explicit step
+    above the advised stability limit is warned about (logged, and recorded in ``result.metadata["warnings"]``)."""
     warnings = step_warnings(scene, solver)
-    result = simulate(scene, solver, end_time, progress, spec)
+    result = simulate(scene, solver, end_time, progress, spec, step_advice(scene, solver).text())
     if warnings:
         result.metadata.setdefault("warnings", []).extend(warnings)
     return result
@@ -108,6 +109,7 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
     summary = {
         "scenario": spec.scenario.name,
         "status": result.status,
+        "failure": result.failure.label,
         "message": result.message,
         "checks": [check.to_dict() for check in result.checks],
         "engine": result.engine,
@@ -120,6 +122,7 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
         "force_evaluations": result.stats.force_evaluations,
         "newton_iterations": result.stats.newton_iterations,
         "scene": scene_counts(scene),
+        "step_advice": step_advice(scene, spec.solver).to_dict(),
     }
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")

@@ -10,7 +10,8 @@ all pass, ``suspect`` otherwise.
 * ``guard_warnings``: the model's warnings (a cage that left its rollers, say) [count], none allowed.
 
 ``spurious_slip`` is added by the commands that refine the step to look for it (``run --check-slip``,
-``advise --check-slip``).
+``advise --check-slip``). Every fix that changes the step quotes the run's one step advice
+(:func:`bearing_mbs.numerics.advisor.step_advice`), so following it passes the ``step_limit`` check.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from bearing_mbs.core.checks import Check, judged, upper_bound
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
 from bearing_mbs.engines.diagnosis import output_grid
-from bearing_mbs.numerics.advisor import step_against_limit
+from bearing_mbs.numerics.advisor import step_advice, step_against_limit
 from bearing_mbs.spec.solver import SolverSpec
 
 #: A run reached its end time when its last output instant is within this fraction of it.
@@ -34,27 +35,21 @@ def run_checks(scene: Scene, solver: SolverSpec, end_time: float, result: Result
         return ()
     last = float(result.time[-1]) if result.time.size else 0.0
     expected = output_grid(end_time, solver.output_interval).size
+    advice = step_advice(scene, solver).text()
     checks = [
         judged("end_time_reached", last, end_time, last >= end_time * (1 - END_TIME_TOLERANCE), "s",
                f"the engine stopped at t = {last:.6g} s without an error, short of the end time {end_time:g} s. "
-               f"Likely fix: a step ({solver.active.step:g} s now) well below the end time and the output interval"),
+               f"Likely fix: a step well below the end time and the output interval: {advice}"),
         judged("output_instants", result.time.size, expected, result.time.size == expected, "count",
-               f"{result.time.size} of {expected} output instants were recorded. Likely fix: a step "
-               f"({solver.active.step:g} s now) at most the output interval ({solver.output_interval:g} s)"),
+               f"{result.time.size} of {expected} output instants were recorded. Likely fix: a step at most the "
+               f"output interval ({solver.output_interval:g} s): {advice}"),
     ]
     step = step_against_limit(scene, solver)
     if step is not None:
         checks.append(upper_bound("step_limit", step.step, step.limit, "s",
                                   f"above the advised stability limit (set by {step.mode}) a run may stay bounded "
-                                  f"but slip wrongly. Likely fix: {step.fix()}"))
+                                  f"but slip wrongly. Likely fix: {advice}"))
     checks.append(upper_bound("energy_audit", energy_balance_error(scene, result), ENERGY_AUDIT_BOUND, "-",
-                              f"the energy balance does not close. Likely fix: {_finer(solver)}"))
+                              f"the energy balance does not close. Likely fix: {advice}"))
     checks.append(judged("guard_warnings", len(warnings), 0, not warnings, "count", "; ".join(warnings)))
     return tuple(checks)
-
-
-def _finer(solver: SolverSpec) -> str:
-    settings = solver.active
-    if settings.adaptive:
-        return f"a tolerance of {settings.tolerance / 100:g} (now {settings.tolerance:g})"
-    return f"a step of {settings.step / 4:g} s (now {settings.step:g} s)"

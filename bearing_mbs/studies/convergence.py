@@ -34,6 +34,7 @@ from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models import build_scene
+from bearing_mbs.numerics.advisor import step_advice
 from bearing_mbs.spec import Spec, SpecError, to_mapping
 from bearing_mbs.spec.convergence import RunSettings
 from bearing_mbs.studies.common import resample_result, solver_at
@@ -118,7 +119,7 @@ def end_time(spec: Spec) -> float:
 
 def run_setting(spec: Spec, scene, run: RunSettings, step, tolerance, progress=None) -> Result:
     solver = solver_for(spec, run, tolerance if run.adaptive else step)
-    return simulate(scene, solver, end_time(spec), progress)
+    return simulate(scene, solver, end_time(spec), progress, step_advice=step_advice(scene, solver).text())
 
 
 def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = None) -> dict:

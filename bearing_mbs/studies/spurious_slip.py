@@ -150,13 +150,13 @@ def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, resul
                         refinement: float = 2.0, progress=None) -> SlipCheck:
     """Run ``scene`` at the refined step (and at the given step unless ``result`` is that run) and compare the slip
     levels (:func:`compare_slip_levels`)."""
-    from bearing_mbs.engines import simulate
-    from bearing_mbs.numerics.advisor import advise
+    from bearing_mbs.numerics.advisor import step_advice
+    from bearing_mbs.runner import simulate_advised
 
     if result is None:
-        result = simulate(scene, solver, end_time, progress)
+        result = simulate_advised(scene, solver, end_time, progress)
     finer_solver = refined(solver, refinement)
-    finer = simulate(scene, finer_solver, end_time, progress)
+    finer = simulate_advised(scene, finer_solver, end_time, progress)
     found = compare_slip_levels(scene, result, finer)
     step, finer_step = setting_of(solver), setting_of(finer_solver)
     what = "tolerance" if solver.active.adaptive else "step"
@@ -169,15 +169,10 @@ def check_spurious_slip(scene: Scene, solver: SolverSpec, end_time: float, resul
         detail = (f"pair {pair.name!r}: median slip {found['slip']:.3g} m/s at {what} {step:.3g} but "
                   f"{found['reference_slip']:.3g} m/s at {finer_step:.3g}, over t = {start:.6g}…{end:.6g} s")
         if spurious:
-            limit = advise(scene).recommended(solver.engine, solver.active.method)
-            target = limit if limit and limit < step else finer_step / refinement
-            unit = "" if solver.active.adaptive else " s"
-            switch = "" if getattr(solver.active, "implicit", False) else \
-                ", or switch to Exudyn's generalized_alpha"
             message = (f"{detail}: the slip is spurious (its level changes by {found['difference']:.3g} m/s, more "
                        f"than {SLIP_TOLERANCE:g} v_reg = {SLIP_TOLERANCE * pair.law.regularisation_speed:.3g} m/s, "
-                       f"when the {what} is refined {refinement:g}x). Likely fix: a {what} of {target:.2g}{unit} "
-                       f"(bearing-mbs advise){switch}.")
+                       f"when the {what} is refined {refinement:g}x). Likely fix: "
+                       f"{step_advice(scene, solver).text()}.")
         else:
             message = f"slip converged: the largest change of a slip level is {found['difference']:.3g} m/s ({detail})"
     return SlipCheck(spurious, found["difference"], found["ratio"], found["window"],

@@ -52,7 +52,7 @@ from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models import build_scene, spec_from_mapping
-from bearing_mbs.numerics.advisor import advise
+from bearing_mbs.numerics.advisor import advise, step_advice
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.studies.common import refined_setting, solver_at, spec_mapping, with_overrides
 from bearing_mbs.studies.spurious_slip import compare_slips
@@ -185,7 +185,9 @@ class CellRunner:
             started = time.perf_counter()
             budget = WallClockBudget(self.settings.max_probe_wall_time)
             try:
-                result = simulate(self.scene, self.solver(setting), self.end_time, budget)
+                solver = self.solver(setting)
+                result = simulate(self.scene, solver, self.end_time, budget,
+                                  step_advice=step_advice(self.scene, solver).text())
             except BudgetExceeded:
                 result = None
             wall = time.perf_counter() - started

@@ -39,7 +39,7 @@ from bearing_mbs.engines.diagnosis import (
     interrupted_message,
     output_grid,
     penetration_message,
-    smaller_step,
+    step_fix,
 )
 from bearing_mbs.engines.exudyn.connectors import (
     ForceConnector,
@@ -68,7 +68,8 @@ def check_supported(scene: Scene, solver: SolverSpec) -> None:
 
 
 def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
-                    spec: dict | None = None, stop: StopRequest | None = None) -> Result:
+                    spec: dict | None = None, stop: StopRequest | None = None,
+                    step_advice: str | None = None) -> Result:
     import exudyn as exu
     from exudyn.itemInterface import (
         LoadMassProportional,
@@ -174,7 +175,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
                                         jacobianUserFunction=jacobian or 0))
 
     monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                           lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop or StopRequest())
+                           lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop or StopRequest(),
+                           step_advice)
     mbs.SetPostStepUserFunction(monitor)
     mbs.Assemble()
 
@@ -189,7 +191,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     except Exception as error:  # Exudyn raises when a solver gives up
         solved = False
         if not monitor.message:
-            monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, str(error)))
+            monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, str(error), step_advice))
     finally:
         wall = time.perf_counter() - started
         progress.close()
@@ -205,7 +207,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         wall_time_s=wall,
     )
     if not solved and not monitor.message:
-        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, _last_line(exudyn_log)))
+        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, _last_line(exudyn_log),
+                                                                   step_advice))
     if monitor.message:
         monitor.record_final()
     out_t, out_q, out_v, out_pairs, out_work, out_constraints = monitor.outputs()
@@ -257,14 +260,14 @@ def _joint_force(mbs, exu, joint) -> float:
     return float(np.linalg.norm(mbs.GetObjectOutput(joint, output)))
 
 
-def _solver_failure(scene, solver, t, detail) -> str:
+def _solver_failure(scene, solver, t, detail, step_advice=None) -> str:
     settings = solver.exudyn
     what = "Newton's method did not converge" if settings.implicit else "the solver stopped"
     hint = ""
     if settings.implicit and any(p.law.friction_law == "dead_zone" for p in scene.pairs):
         hint = " The dead_zone friction law is discontinuous, which Newton's method cannot follow: use erf."
     return (f"t = {t:.6g} s: Exudyn's {settings.method} failed: {what} ({detail}). Likely fix: "
-            f"{smaller_step(solver)}.{hint}")
+            f"{step_fix(solver, step_advice)}.{hint}")
 
 
 def _last_line(text: str) -> str:
@@ -276,8 +279,9 @@ class _StepMonitor:
     """PostStepUserFunction: per-pair state, events, output at output instants, guards, progress."""
 
     def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                 constraint_forces, stop):
+                 constraint_forces, stop, step_advice=None):
         self.scene, self.packed, self.reference, self.stop = scene, packed, reference, stop
+        self.step_advice = step_advice
         self.latched, self.events, self.bounds = latched, events, bounds
         self.solver, self.progress, self.constraint_forces = solver, progress, constraint_forces
         self.output_times = output_grid(end_time, solver.output_interval)
@@ -311,7 +315,7 @@ class _StepMonitor:
             coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
             kind = Failure.BLOWUP if finite.all() else Failure.NONFINITE
             return self.fail(kind, diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
-                                                    blown_up=finite.all()))
+                                                    finite.all(), self.step_advice))
         h = t - self.time
         self.q, self.v, self.time = q, v, t
         power = np.array(self._evaluate(t))  # before the latch update: the forces of the step just taken
@@ -319,7 +323,8 @@ class _StepMonitor:
         self._power = power
         _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
-            return self.fail(Failure.PENETRATION, penetration_message(self.scene, self.solver, t, worst, q, v))
+            return self.fail(Failure.PENETRATION, penetration_message(self.scene, self.solver, t, worst, q, v,
+                                                                           self.step_advice))
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
             self._record(t)
         self._calls += 1

@@ -76,7 +76,8 @@ def newton_system(scene: Scene) -> BlockSystem:
 
 
 def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
-                       spec: dict | None = None, stop: StopRequest | None = None) -> Result:
+                       spec: dict | None = None, stop: StopRequest | None = None,
+                       step_advice: str | None = None) -> Result:
     settings = solver.reference
     progress = progress or ProgressMeter()
     stop = stop or StopRequest()
@@ -148,7 +149,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     stats = Stats(steps=int(counters[STEPS]), rejected_steps=int(counters[REJECTED]),
                   force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall, **implicit_counts)
     failure = Failure(status)
-    message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive)
+    message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive, step_advice)
     if failure == Failure.INTERRUPTED:  # stopped at an output instant: keep the instants computed
         series = [a[:index] for a in series]
     elif failure != Failure.NONE:

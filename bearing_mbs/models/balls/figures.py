@@ -21,7 +21,7 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
     axes[0].legend()
     axes[-1].set_xlabel("time [s]")
     fig.suptitle(f"{scene.name}: coordinates ({result.engine} {result.method})")
-    paths.append(save_figure(fig, directory / "coordinates.png"))
+    paths.append(save_figure(fig, directory / "coordinates.png", status_note=result.status_note))
 
     fig, axis = new_figure(figsize=(6, 5))
     for i, body in enumerate(scene.bodies):
@@ -31,7 +31,7 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
     axis.set_ylabel("y [m]")
     axis.legend()
     axis.set_title(f"{scene.name}: trajectories")
-    paths.append(save_figure(fig, directory / "trajectory.png"))
+    paths.append(save_figure(fig, directory / "trajectory.png", status_note=result.status_note))
 
     if scene.pairs:
         fig, axis = new_figure(figsize=(7, 4))
@@ -41,9 +41,11 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
                 axis.plot(result.time, forces[:, k], label=pair.name)
         axis.set_xlabel("time [s]")
         axis.set_ylabel("normal force [N]")
-        axis.legend(fontsize="small")
-        axis.set_title(f"{scene.name}: contact forces at output instants")
-        paths.append(save_figure(fig, directory / "contact_forces.png"))
+        if axis.lines:
+            axis.legend(fontsize="small")
+        axis.set_title(f"{scene.name}: contact forces at output instants"
+                       + ("" if axis.lines else " (no contact at any output instant)"))
+        paths.append(save_figure(fig, directory / "contact_forces.png", status_note=result.status_note))
 
     fig, axis = new_figure(figsize=(7, 4))
     for name, series in energy(scene, result).items():
@@ -52,5 +54,5 @@ def balls_figures(spec, scene: Scene, result: Result, directory: Path) -> list[P
     axis.set_ylabel("energy [J]")
     axis.legend()
     axis.set_title(f"{scene.name}: energy")
-    paths.append(save_figure(fig, directory / "energy.png"))
+    paths.append(save_figure(fig, directory / "energy.png", status_note=result.status_note))
     return paths

@@ -53,7 +53,7 @@ def bearing_figures(spec, scene, result, directory) -> list[Path]:
     paths = []
     for name, draw in drawers:
         figure = draw(spec, scene, result)
-        paths.append(save_figure(figure, directory / name, dpi=DPI))
+        paths.append(save_figure(figure, directory / name, dpi=DPI, status_note=result.status_note))
     log.debug("%s: drew %d figures", scene.name, len(paths))
     return paths
 
@@ -205,7 +205,8 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
             px, py = pocket_points.T
             pockets.set_data(xc + c * px - s * py, yc + s * px + c * py)
         slip_text = "" if np.isnan(slip[i]) else f", cage slip {100 * slip[i]:.2f} %"
-        label.set_text(f"t = {result.time[i]:.4f} s, {result.velocity[i, 2] * RPM_PER_RAD_S:.0f} rpm{slip_text}")
+        note = f"\n{result.status_note}" if result.status_note else ""
+        label.set_text(f"t = {result.time[i]:.4f} s, {result.velocity[i, 2] * RPM_PER_RAD_S:.0f} rpm{slip_text}{note}")
         return [inner, inner_mark, *discs, *spin_marks, cage_ring, pockets, label]
 
     movie = animation.FuncAnimation(figure, draw, frames=instants.size, blit=False)
@@ -215,8 +216,10 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
 
 
 def _shade_window(axis, spec, result) -> None:
-    start = result.time[window(spec, result)][0]
-    axis.axvspan(start, result.time[-1], color="grey", alpha=0.12, linewidth=0)
+    """Shade the analysis window; nothing where the run stopped before it."""
+    start = spec.analysis.window_start(spec.scenario.end_time)
+    if result.time.size and result.time[-1] >= start:
+        axis.axvspan(start, result.time[-1], color="grey", alpha=0.12, linewidth=0)
 
 
 def _cell_edges(time: np.ndarray) -> np.ndarray:

@@ -1,6 +1,8 @@
 r"""Skidding metrics of the bearing model, in the style of the skidding literature.
 
-All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` (default: the second half).
+All means are taken over the analysis window :math:`t \ge` ``[analysis] start`` (default: the second half),
+whose start ``analysis_start`` the summary reports. A run that stopped before its window (interrupted or failed)
+keeps that start and has no window metric (None).
 
 * ``cage_speed_ratio``: mean cage speed over the mean epicyclic speed :math:`\omega_i(1 - D_w/D_{pw})/2`
   (for a full-complement bearing, the rollers' mean orbital speed); ``cage_slip`` = 1 − that ratio.
@@ -126,6 +128,12 @@ def bearing_warnings(spec, scene, result) -> list[str]:
 
 
 def bearing_metrics(spec, scene, result) -> dict:
+    start = spec.analysis.window_start(spec.scenario.end_time)
+    whole_run = {"energy_balance_error": energy_balance_error(scene, result),
+                 "max_cage_eccentricity": cage_eccentricity(scene, result), "analysis_start": start,
+                 "warnings": bearing_warnings(spec, scene, result)}
+    if not (result.time >= start - 1e-12).any():  # stopped before its window: the window stays, its metrics are None
+        return {**dict.fromkeys(key for key in UNITS if key not in whole_run), **whole_run}
     geometry = BearingGeometry.from_spec(spec.bearing)
     mask = window(spec, result)
     inner_speed = result.velocity[:, 2]
@@ -148,8 +156,6 @@ def bearing_metrics(spec, scene, result) -> dict:
     def largest(values):
         return float(np.nanmax(np.abs(values))) if np.isfinite(values).any() else None
 
-    eccentricity = cage_eccentricity(scene, result)
-
     return {
         "mean_inner_speed_rpm": float(np.mean(inner_speed[mask]) * 60 / (2 * np.pi)),
         "cage_speed_ratio": ratio,
@@ -164,8 +170,6 @@ def bearing_metrics(spec, scene, result) -> dict:
         "inner_ring_displacement": float(np.hypot(*offset)),
         "inner_ring_offset": [float(offset[0]), float(offset[1])],
         "max_pocket_force": max_pocket,
-        "energy_balance_error": energy_balance_error(scene, result),
-        "max_cage_eccentricity": eccentricity,
+        **whole_run,
         "analysis_start": float(result.time[mask][0]),
-        "warnings": bearing_warnings(spec, scene, result),
     }

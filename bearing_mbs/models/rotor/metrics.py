@@ -117,4 +117,4 @@ def rotor_figures(spec: RotorSpec, scene, result, directory) -> list[Path]:
     history.set_xlabel("time [s]")
     history.set_ylabel("ε")
     figure.suptitle(f"{spec.scenario.name}: {spec.bearing.force} film force")
-    return [save_figure(figure, Path(directory) / "orbit.png")]
+    return [save_figure(figure, Path(directory) / "orbit.png", status_note=result.status_note)]

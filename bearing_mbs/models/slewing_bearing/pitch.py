@@ -113,4 +113,4 @@ def pitch_figures(spec: SlewingSpec, scene: Scene, result, directory) -> list[Pa
     tilt.set_xlabel("time [s]")
     axial.legend()
     axial.set_title(f"{spec.scenario.name}: blade root on the pitch bearing")
-    return [save_figure(figure, Path(directory) / "pitch_response.png")]
+    return [save_figure(figure, Path(directory) / "pitch_response.png", status_note=result.status_note)]
