@@ -53,12 +53,13 @@ class Lubricant:
         def refuse(field, value, allowed):
             raise LubricantError(field, value, allowed)
 
-        for field, low, high in (("viscosity_40", 1e-6, 1e-2), ("viscosity_100", 1e-7, 1e-3),
-                                 ("density_15", 600.0, 1200.0), ("thermal_expansion", 0.0, 2e-3),
-                                 ("pressure_viscosity", 5e-9, 4e-8), ("thermal_conductivity", 0.05, 0.5)):
+        for field, low, high, unit in (("viscosity_40", 1e-6, 1e-2, "m²/s"), ("viscosity_100", 1e-7, 1e-3, "m²/s"),
+                                       ("density_15", 600.0, 1200.0, "kg/m³"), ("thermal_expansion", 0.0, 2e-3, "1/K"),
+                                       ("pressure_viscosity", 5e-9, 4e-8, "1/Pa"),
+                                       ("thermal_conductivity", 0.05, 0.5, "W/(m K)")):
             value = getattr(self, field)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and low <= value <= high):
-                refuse(field, value, f"must be in [{low:g}, {high:g}]")
+                refuse(field, value, f"must be in [{low:g}, {high:g}] {unit}")
         if not self.viscosity_100 < self.viscosity_40:
             refuse("viscosity_100", self.viscosity_100, f"must be < viscosity_40 = {self.viscosity_40:g} m²/s")
         low, high = self.temperature_range

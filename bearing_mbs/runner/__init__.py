@@ -23,6 +23,7 @@ from bearing_mbs.models import MODELS, build_scene
 from bearing_mbs.numerics.advisor import step_advice, step_warning
 from bearing_mbs.runner.checks import run_checks
 from bearing_mbs.runner.outputs import SUMMARY_FILE, Staging
+from bearing_mbs.runner.run_time import require_feasible_run_time
 from bearing_mbs.runner.units import RUN_UNITS
 from bearing_mbs.spec import Spec, SpecError, to_mapping
 from bearing_mbs.spec.solver import SolverSpec
@@ -37,9 +38,12 @@ OUTPUT_MEMORY_SHARE = 0.5
 def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, Result]:
     """Build the scene (all validation happens here, before any simulation), run it and check the result."""
     scene = build_scene(spec)
+    run_time_warnings = require_feasible_run_time(scene, spec.solver, spec.scenario.end_time)
     require_output_fits(scene, spec.solver, spec.scenario.end_time)
     require_initial_speeds_within_limit(scene, spec.solver)
     result = simulate_advised(scene, spec.solver, spec.scenario.end_time, progress, spec=to_mapping(spec))
+    if run_time_warnings:
+        result.metadata.setdefault("warnings", []).extend(run_time_warnings)
     warnings = MODELS[spec.scenario.model].warnings(spec, scene, result)
     result.checks = run_checks(scene, spec.solver, spec.scenario.end_time, result, warnings)
     if not result.completed:

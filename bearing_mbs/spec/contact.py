@@ -72,16 +72,16 @@ class ContactSpec:
                 if getattr(self, name) is None:
                     object.__setattr__(self, name, default)
             positive("stiffness", self.stiffness)
-            in_range("exponent", self.exponent, 1.0, 3.0)
+            in_range("exponent", self.exponent, 1.0, 3.0, "-")
         else:
             for name in GIVEN_DEFAULTS:
                 if getattr(self, name) is not None:
                     raise SpecError(name, getattr(self, name), f"is set by stiffness_model = "
                                     f"{self.stiffness_model!r}: remove it, or use stiffness_model = 'given'")
-        in_range("restitution", self.restitution, 0.0, 1.0, low_open=True)
+        in_range("restitution", self.restitution, 0.0, 1.0, "-", low_open=True)
         positive("approach_speed_floor", self.approach_speed_floor)
         one_of("friction_law", self.friction_law, FRICTION_LAWS)
-        in_range("friction_coefficient", self.friction_coefficient, 0.0, 2.0)
+        in_range("friction_coefficient", self.friction_coefficient, 0.0, 2.0, "-")
         positive("regularisation_speed", self.regularisation_speed)
         non_negative("rolling_resistance_arm", self.rolling_resistance_arm)
         if self.rolling_resistance_arm > 0 and self.friction_law == "none":
@@ -92,10 +92,10 @@ class ContactSpec:
         one_of("film_formula", self.film_formula, FILM_FORMULAS)
         require(isinstance(self.thermal_reduction, bool), "thermal_reduction", self.thermal_reduction,
                 "must be true or false")
-        in_range("roughness", self.roughness, 1e-9, 1e-5)
-        in_range("eyring_stress", self.eyring_stress, 1e5, 1e8)
-        in_range("shear_modulus", self.shear_modulus, 1e6, 1e10)
-        in_range("limiting_shear_coefficient", self.limiting_shear_coefficient, 0.01, 0.2)
+        in_range("roughness", self.roughness, 1e-9, 1e-5, "m")
+        in_range("eyring_stress", self.eyring_stress, 1e5, 1e8, "Pa")
+        in_range("shear_modulus", self.shear_modulus, 1e6, 1e10, "Pa")
+        in_range("limiting_shear_coefficient", self.limiting_shear_coefficient, 0.01, 0.2, "-")
         if self.traction_curve is not None:
             curve = tuple(self.traction_curve)
             require(len(curve) == 4 and all(isinstance(c, (int, float)) for c in curve), "traction_curve", curve,

@@ -68,6 +68,6 @@ class ConvergenceSpec:
         one_of("norm", self.norm, NORMS)
         require(len(self.runs) > 0, "runs", [], "needs at least one [[convergence.runs]] entry")
         for i, target in enumerate(self.targets):
-            in_range(f"targets.{i}", target, 0.0, 1.0, low_open=True, high_open=True)
+            in_range(f"targets.{i}", target, 0.0, 1.0, "-", low_open=True, high_open=True)
         if self.start is not None and self.end is not None and not self.end > self.start:
             raise SpecError("end", self.end, "must be after start")

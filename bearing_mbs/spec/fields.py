@@ -38,13 +38,19 @@ def non_negative(field: str, value) -> None:
     require(value >= 0, field, value, "must be >= 0")
 
 
-def in_range(field: str, value, low: float, high: float, *, low_open=False, high_open=False) -> None:
-    """``value`` in the interval from low to high; open or closed at each end."""
+#: How a dimensionless range is marked in a message.
+DIMENSIONLESS = "-"
+
+
+def in_range(field: str, value, low: float, high: float, unit: str, *, low_open=False, high_open=False) -> None:
+    """``value`` in the interval from low to high [``unit``; :data:`DIMENSIONLESS` for none]; open or closed at each
+    end. The message carries the unit, e.g. "must be in [-10, 120] °C"."""
     finite(field, value)
     above = value > low if low_open else value >= low
     below = value < high if high_open else value <= high
     bracket = f"{'(' if low_open else '['}{low:g}, {high:g}{')' if high_open else ']'}"
-    require(above and below, field, value, f"must be in {bracket}")
+    require(above and below, field, value,
+            f"must be in {bracket} {'(dimensionless)' if unit == DIMENSIONLESS else unit}")
 
 
 def one_of(field: str, value, options) -> None:

@@ -61,12 +61,12 @@ class ReferenceSolver:
     def __post_init__(self):
         one_of("method", self.method, REFERENCE_METHODS)
         positive("step", self.step)
-        in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
-        in_range("spectral_radius", self.spectral_radius, 0.0, 1.0)
+        in_range("tolerance", self.tolerance, 0.0, 1.0, "-", low_open=True, high_open=True)
+        in_range("spectral_radius", self.spectral_radius, 0.0, 1.0, "-")
         if self.contact_step is not None:
             if self.method != "central_difference":
                 raise SpecError("contact_step", self.contact_step, "only the central_difference method uses it")
-            in_range("contact_step", self.contact_step, 0.0, self.step, low_open=True)
+            in_range("contact_step", self.contact_step, 0.0, self.step, "s", low_open=True)
 
     @property
     def adaptive(self) -> bool:
@@ -108,9 +108,9 @@ class ExudynSolver:
             object.__setattr__(self, "method", renamed)
         one_of("method", self.method, tuple(EXUDYN_METHODS))
         positive("step", self.step)
-        in_range("tolerance", self.tolerance, 0.0, 1.0, low_open=True, high_open=True)
+        in_range("tolerance", self.tolerance, 0.0, 1.0, "-", low_open=True, high_open=True)
         one_of("connector", self.connector, CONNECTORS)
-        in_range("spectral_radius", self.spectral_radius, 0.0, 1.0)
+        in_range("spectral_radius", self.spectral_radius, 0.0, 1.0, "-")
         one_of("jacobian", self.jacobian, JACOBIANS)
 
     @property
@@ -142,7 +142,7 @@ class SolverSpec:
     def __post_init__(self):
         one_of("engine", self.engine, ENGINES)
         positive("output_interval", self.output_interval)
-        in_range("penetration_limit", self.penetration_limit, 0.0, 1.0, low_open=True)
+        in_range("penetration_limit", self.penetration_limit, 0.0, 1.0, "-", low_open=True)
         positive("speed_limit", self.speed_limit)
 
     @property

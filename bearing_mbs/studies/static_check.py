@@ -100,7 +100,7 @@ class SettlingSettings:
     def __post_init__(self):
         for name in ("ramp", "hold", "output_interval", "drift_tolerance", "amplitude_tolerance"):
             positive(name, getattr(self, name))
-        in_range("window", self.window, 0.0, self.hold, low_open=True)
+        in_range("window", self.window, 0.0, self.hold, "s", low_open=True)
         require(self.ramp_points >= 2, "ramp_points", self.ramp_points, "must be >= 2")
         one_of("ramp_shape", self.ramp_shape, tuple(RAMP_SHAPES))
         require(self.window >= 4 * self.output_interval, "window", self.window,
@@ -285,7 +285,7 @@ def finite_difference_stiffness(spec: Spec, applied, relative_step: float = 0.05
     """Central-difference stiffness of the engine's static equilibria around ``applied`` (F_x, F_y) [N];
     steps of ``relative_step`` · |F| along x and y (four runs)."""
     applied = np.asarray(applied, dtype=float)
-    in_range("relative_step", relative_step, 0.0, 0.5, low_open=True)
+    in_range("relative_step", relative_step, 0.0, 0.5, "-", low_open=True)
     step = relative_step * float(np.hypot(*applied))
     positive("applied", step)
     equilibria, dynamic, secant = [], np.zeros((2, 2)), np.zeros((2, 2))

@@ -51,7 +51,7 @@ class MaterialSpec:
 
     def __post_init__(self):
         positive("youngs_modulus", self.youngs_modulus)
-        in_range("poisson_ratio", self.poisson_ratio, 0.0, 0.5, high_open=True)
+        in_range("poisson_ratio", self.poisson_ratio, 0.0, 0.5, "-", high_open=True)
         positive("density", self.density)
 
 
@@ -102,7 +102,7 @@ class BearingSpec:
         for name in ("roller_diameter", "roller_length", "cage_diameter", "pocket_clearance", "cage_thickness",
                      "cage_width", "inner_ring_bore", "ring_width"):
             positive(name, getattr(self, name))
-        in_range("supported_mass", self.supported_mass, 0.0, SUPPORTED_MASS_LIMIT)
+        in_range("supported_mass", self.supported_mass, 0.0, SUPPORTED_MASS_LIMIT, "kg")
         by_pitch = (self.pitch_diameter, self.diametral_clearance)
         by_races = (self.inner_race_diameter, self.outer_race_diameter)
         if all(v is not None for v in by_pitch) == all(v is not None for v in by_races) or (
@@ -121,7 +121,8 @@ class BearingSpec:
         if self.cage_guidance != "rollers":
             require(self.land_clearance is not None, "land_clearance", None,
                     f"is required with cage_guidance = {self.cage_guidance}")
-            in_range("land_clearance", self.land_clearance, 0.0, self.roller_diameter, low_open=True, high_open=True)
+            in_range("land_clearance", self.land_clearance, 0.0, self.roller_diameter, "m", low_open=True,
+                     high_open=True)
         inner = inner_race_diameter(self.pitch, self.roller_diameter, self.clearance)
         require(self.inner_ring_bore < inner, "inner_ring_bore", self.inner_ring_bore,
                 f"< the inner raceway diameter {inner:.6g} m (the ring needs a wall)")
@@ -243,8 +244,8 @@ class GearTrainSpec:
         for name in ("generator_torque", "generator_torque_rate", "rotor_torque", "rotor_torque_rate",
                      "mesh_angle"):
             finite(name, getattr(self, name))
-        in_range("pressure_angle", self.pressure_angle, 0.0, 45.0)
-        in_range("load_share", self.load_share, 0.0, 100.0)
+        in_range("pressure_angle", self.pressure_angle, 0.0, 45.0, "deg")
+        in_range("load_share", self.load_share, 0.0, 100.0, "%")
 
 
 @dataclass(frozen=True)
@@ -399,10 +400,10 @@ class LubricantSpec:
 
     def __post_init__(self):
         one_of("model", self.model, DRAG_MODELS)
-        in_range("oil_fraction", self.oil_fraction, 0.0, 1.0, low_open=True)
+        in_range("oil_fraction", self.oil_fraction, 0.0, 1.0, "-", low_open=True)
         if self.viscosity is not None:
             positive("viscosity", self.viscosity)
-        in_range("drag_factor", self.drag_factor, 0.5, 10.0)
+        in_range("drag_factor", self.drag_factor, 0.5, 10.0, "-")
         if self.reference_rpm is not None:
             positive("reference_rpm", self.reference_rpm)
         if self.drag_moment is not None:
@@ -422,7 +423,7 @@ class LubricantSpec:
             oil = self.lubricant()
             if self.temperature is not None:
                 low, high = oil.temperature_range
-                in_range("temperature", self.temperature, low, high)
+                in_range("temperature", self.temperature, low, high, "°C")
         if self.model == "churning":
             require(self.temperature is not None, "temperature", None, "the churning drag needs the oil and its "
                     "operating temperature [°C] (its density and viscosity)")
@@ -470,8 +471,8 @@ class AnalysisSpec:
             require(self.start_fraction is None, "start_fraction", self.start_fraction,
                     f"give start [s] or start_fraction, not both (start = {self.start!r})")
         if self.start_fraction is not None:
-            in_range("start_fraction", self.start_fraction, 0.0, 1.0, high_open=True)
-        in_range("load_fraction", self.load_fraction, 0.0, 1.0)
+            in_range("start_fraction", self.start_fraction, 0.0, 1.0, "-", high_open=True)
+        in_range("load_fraction", self.load_fraction, 0.0, 1.0, "-")
 
     def window_start(self, end_time: float) -> float:
         """Where the window starts [s] in a run that ends at ``end_time`` [s]."""

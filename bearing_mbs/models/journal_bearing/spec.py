@@ -44,16 +44,16 @@ class RecessSection:
     def __post_init__(self):
         require(isinstance(self.count, int) and self.count >= 1, "count", self.count, "an integer >= 1")
         widest = 360.0 if self.count == 1 else 360.0 / self.count
-        in_range("angular_width", self.angular_width, 0.0, widest, low_open=True, high_open=self.count > 1)
+        in_range("angular_width", self.angular_width, 0.0, widest, "deg", low_open=True, high_open=self.count > 1)
         positive("axial_length", self.axial_length)
         positive("depth", self.depth)
         non_negative("supply_pressure", self.supply_pressure)
         one_of("restrictor", self.restrictor, tuple(RESTRICTORS))
-        in_range("first_angle", self.first_angle, -360.0, 360.0)
+        in_range("first_angle", self.first_angle, -360.0, 360.0, "deg")
         for name in RESTRICTOR_KEYS[self.restrictor]:
             require(getattr(self, name) is not None, name, None, f"required by restrictor = {self.restrictor!r}")
             positive(name, getattr(self, name))
-        in_range("discharge_coefficient", self.discharge_coefficient, 0.0, 1.0, low_open=True)
+        in_range("discharge_coefficient", self.discharge_coefficient, 0.0, 1.0, "-", low_open=True)
         if self.restrictor == "capillary":
             require(self.capillary_length >= CAPILLARY_MIN_ASPECT * self.capillary_diameter, "capillary_length",
                     self.capillary_length, f">= {CAPILLARY_MIN_ASPECT:g} × capillary_diameter = "
@@ -83,12 +83,12 @@ class JournalSection:
     def __post_init__(self):
         positive("diameter", self.diameter)
         positive("length", self.length)
-        in_range("radial_clearance", self.radial_clearance, 0.0, self.diameter / 2, low_open=True, high_open=True)
+        in_range("radial_clearance", self.radial_clearance, 0.0, self.diameter / 2, "m", low_open=True, high_open=True)
         positive("viscosity", self.viscosity)
-        in_range("speed_rpm", self.speed_rpm, -1e6, 1e6)
+        in_range("speed_rpm", self.speed_rpm, -1e6, 1e6, "rpm")
         positive("density", self.density)
-        in_range("eccentricity_ratio", self.eccentricity_ratio, 0.0, 1.0, high_open=True)
-        in_range("attitude", self.attitude, -360.0, 360.0)
+        in_range("eccentricity_ratio", self.eccentricity_ratio, 0.0, 1.0, "-", high_open=True)
+        in_range("attitude", self.attitude, -360.0, 360.0, "deg")
         one_of("cavitation", self.cavitation, CAVITATION)
         require(len(self.grid) == 2 and all(isinstance(n, int) and n >= 4 for n in self.grid), "grid",
                 list(self.grid), "[n_theta, n_z], integers >= 4")

@@ -52,7 +52,7 @@ class BearingSection:
     def __post_init__(self):
         positive("diameter", self.diameter)
         positive("length", self.length)
-        in_range("radial_clearance", self.radial_clearance, 0.0, self.diameter / 2, low_open=True, high_open=True)
+        in_range("radial_clearance", self.radial_clearance, 0.0, self.diameter / 2, "m", low_open=True, high_open=True)
         positive("viscosity", self.viscosity)
         one_of("force", self.force, SOURCES)
         require(len(self.grid) == 2 and all(isinstance(n, int) and n >= 4 for n in self.grid), "grid",
@@ -71,9 +71,9 @@ class DriveSection:
     gain: float = 100.0
 
     def __post_init__(self):
-        in_range("speed_rpm", self.speed_rpm, 0.0, 1e6, low_open=True)
+        in_range("speed_rpm", self.speed_rpm, 0.0, 1e6, "rpm", low_open=True)
         if self.start_rpm is not None:
-            in_range("start_rpm", self.start_rpm, 0.0, 1e6, low_open=True)
+            in_range("start_rpm", self.start_rpm, 0.0, 1e6, "rpm", low_open=True)
         non_negative("ramp_time", self.ramp_time)
         positive("gain", self.gain)
 

@@ -42,10 +42,10 @@ class SlewingSection:
     def __post_init__(self):
         positive("pitch_diameter", self.pitch_diameter)
         positive("ball_diameter", self.ball_diameter)
-        in_range("conformity", self.conformity, 0.5, 1.0, low_open=True, high_open=True)
-        in_range("contact_angle", self.contact_angle, 0.0, 90.0, low_open=True, high_open=True)
+        in_range("conformity", self.conformity, 0.5, 1.0, "-", low_open=True, high_open=True)
+        in_range("contact_angle", self.contact_angle, 0.0, 90.0, "deg", low_open=True, high_open=True)
         positive("youngs_modulus", self.youngs_modulus)
-        in_range("poisson_ratio", self.poisson_ratio, 0.0, 0.5, high_open=True)
+        in_range("poisson_ratio", self.poisson_ratio, 0.0, 0.5, "-", high_open=True)
         if self.balls is not None:
             require(isinstance(self.balls, int) and self.balls >= 1, "balls", self.balls, "an integer >= 1")
         one_of("rings", self.rings, ("rigid", "flexible"))
@@ -99,7 +99,7 @@ class PitchSection:
         positive("blade_mass", self.blade_mass)
         positive("blade_inertia", self.blade_inertia)
         for name in ("damping", "ramp_time"):
-            in_range(name, getattr(self, name), 0.0, math.inf)
+            in_range(name, getattr(self, name), 0.0, math.inf, "s")
         finite("gust_amplitude", self.gust_amplitude)
         positive("gust_period", self.gust_period)
 

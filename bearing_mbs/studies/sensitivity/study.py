@@ -90,10 +90,10 @@ class Parameter:
                 continue
             require(value is not None, name, value, f"the {self.distribution} distribution needs it")
         if self.distribution == "triang":
-            in_range("peak", self.peak, 0.0, 1.0, high_open=True)
+            in_range("peak", self.peak, 0.0, 1.0, "-", high_open=True)
         if self.distribution == "truncnorm":
-            in_range("mean", self.mean, -math.inf, math.inf)
-            in_range("std", self.std, 0.0, math.inf, low_open=True)
+            in_range("mean", self.mean, -math.inf, math.inf, "-")
+            in_range("std", self.std, 0.0, math.inf, "-", low_open=True)
         if needs:
             require(self.bounds is not None, "bounds", None, f"the {self.distribution} distribution needs bounds")
 
@@ -157,7 +157,7 @@ class Method:
             require(self.second_order is None, "second_order", self.second_order, "only the sobol sampler uses it")
         else:
             object.__setattr__(self, "second_order", bool(self.second_order))
-        in_range("conf_level", self.conf_level, 0.0, 1.0, low_open=True, high_open=True)
+        in_range("conf_level", self.conf_level, 0.0, 1.0, "-", low_open=True, high_open=True)
         require(self.resamples >= 10, "resamples", self.resamples, "must be >= 10")
 
 

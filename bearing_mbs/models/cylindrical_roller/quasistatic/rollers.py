@@ -95,6 +95,7 @@ class RollerSet:
             self.diametral_clearance,
             -PRELOAD_LIMIT * self.roller_diameter,
             CLEARANCE_LIMIT * self.roller_diameter,
+            "m",
         )
         if self.roller_mass is None:
             mass = roller_mass(STEEL.density, self.roller_diameter, self.roller_length)
@@ -103,7 +104,7 @@ class RollerSet:
         finite("first_roller_angle", self.first_roller_angle)
         for side in ("inner", "outer"):
             stiffness, exponent = f"{side}_stiffness", f"{side}_exponent"
-            in_range(exponent, getattr(self, exponent), 1.0, 3.0)
+            in_range(exponent, getattr(self, exponent), 1.0, 3.0, "-")
             if getattr(self, stiffness) is None:
                 require(
                     getattr(self, exponent) == PALMGREN_EXPONENT,
@@ -158,9 +159,9 @@ class NewtonSettings:
     roller_max_iterations: int = 100
 
     def __post_init__(self):
-        in_range("tolerance", self.tolerance, 0.0, 1e-3, low_open=True)
+        in_range("tolerance", self.tolerance, 0.0, 1e-3, "-", low_open=True)
         _integer("max_iterations", self.max_iterations, 1, 1000)
-        in_range("roller_tolerance", self.roller_tolerance, 0.0, 1e-6, low_open=True)
+        in_range("roller_tolerance", self.roller_tolerance, 0.0, 1e-6, "-", low_open=True)
         _integer("roller_max_iterations", self.roller_max_iterations, 1, 1000)
 
 
