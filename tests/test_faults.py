@@ -37,6 +37,8 @@ STEADY = str(SCENARIOS / "seed_hss_steady.toml")
 #: The document's dry model (the steady scenario's variant "dry"), whose step limits these tests cite.
 DRY = ["--set", "scenario.variant=dry"]
 SHORT = [*DRY, "--set", "scenario.end_time=0.002", "--set", "analysis.start=0.001"]
+#: The analysis window of the signalled runs starts after they are stopped [s].
+WINDOW_START = 0.5
 #: The progress bar's unit: once printed, the engine is stepping (compilation is behind it).
 STEPPING = "s simulated"
 
@@ -49,7 +51,7 @@ def _signalled_run(tmp_path: Path, engine: str, number: int) -> tuple[int, Path,
     """Start a long run in a child process, send ``number`` once it is stepping; (exit code, out, its stderr)."""
     out = tmp_path / "out"
     command = [sys.executable, "-m", "bearing_mbs.cli", "run", STEADY, "--out", str(out), "--no-figures",
-               "--engine", engine, *DRY, "--set", "scenario.end_time=1.0", "--set", "analysis.start=0.0"]
+               "--engine", engine, *DRY, "--set", "scenario.end_time=1.0", "--set", f"analysis.start={WINDOW_START}"]
     child = subprocess.Popen(command, stderr=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1,
                              cwd=Path(__file__).resolve().parents[1], env={**os.environ, "TQDM_MININTERVAL": "0"})
     stepping = threading.Event()
@@ -79,8 +81,10 @@ def test_a_signal_stops_the_run_and_keeps_what_it_computed(tmp_path, engine, num
     result = Result.load(out / "result.npz")
     assert result.status == INTERRUPTED
     assert 1 < result.time.size < 10001  # something computed, the run (1 s at 1e-4 s) not finished
-    assert 0 < summary["end_time"] < 1.0
+    assert 0 < summary["end_time"] < WINDOW_START
     assert np.isfinite(result.position).all()
+    # stopped before its analysis window: the window is kept, and no window metric pretends to describe it
+    assert summary["analysis_start"] == WINDOW_START and summary["cage_slip"] is None
 
 
 def test_an_output_under_a_file_is_refused_before_the_run(tmp_path, capsys):
