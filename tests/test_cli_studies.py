@@ -76,6 +76,18 @@ def test_skidding_map_writes_the_grid_and_its_figures(tmp_path, capsys):
     assert "cage slip [%]" in capsys.readouterr().out
 
 
+def test_a_skidding_map_point_without_a_balance_fails(tmp_path):
+    """At 1 N, 1800 rpm and −10 °C the oil's drag exceeds what the rollers' traction carries: the cage's torque
+    balance has no root above 1 % of the epicyclic speed. The point is failed with its reason, its values NaN, and
+    the map exits 1 with its tables written."""
+    out = tmp_path / "map"
+    assert main(["skidding-map", str(STEADY), "--out", str(out), "--loads", "1", "--temperatures", "-10",
+                 "--speeds", "1800", "--no-figures", "--quiet"]) == 1
+    with (out / "skidding_map.csv").open(newline="") as handle:
+        (row,) = list(csv.DictReader(handle))
+    assert row["status"] == "failed" and row["message"] and row["cage_slip"] == "nan"
+
+
 def test_cage_models_writes_the_table_and_figures(tmp_path):
     """4 ms at 2 kN: the constraint cage's and the cageless set's slip still drift between the window halves
     (window_settled fails, exit 3); the penalty cage's pocket-play resolution over a 1 ms half window is 24 %, so

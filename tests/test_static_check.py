@@ -21,10 +21,10 @@ from bearing_mbs.cli import main
 from bearing_mbs.cli.options import exit_code
 from bearing_mbs.models import load_spec
 from bearing_mbs.studies.static_check import (
-    SettlingSettings,
-    StaticCheck,
     DEFAULT_LOADS,
     ENGINES,
+    SettlingSettings,
+    StaticCheck,
     compare_static,
     finite_difference_stiffness,
     quasi_static_rest,

@@ -55,6 +55,9 @@ def check_grid(base: Spec, loads, temperatures, speeds) -> None:
     """Raise :class:`SpecError` before anything runs unless the grid is usable."""
     if base.scenario.model != "bearing":
         raise SpecError("scenario.model", base.scenario.model, "the skidding map varies a bearing scenario")
+    if base.cage.model == "none":
+        raise SpecError("cage.model", base.cage.model, "a caged bearing: the skidding balance is the cage's torque "
+                        "balance")
     if base.lubricant.temperature is None:
         raise SpecError("lubricant.temperature", None, "the skidding map varies a lubricated scenario: give the "
                         "oil and its temperature in [lubricant]")
