@@ -47,6 +47,8 @@ ROWS = {
     "skidding map of a dry scenario": (["skidding-map", STEADY, "--out", "{out}", *DRY], "lubricant.temperature"),
     "skidding map beyond the oil's fit": (["skidding-map", LUBRICATED, "--out", "{out}", "--temperatures", "40,150"],
                                           "lubricant.temperature"),
+    "skidding map without a cage": (["skidding-map", LUBRICATED, "--out", "{out}", "--set", "cage.model=none"],
+                                    "cage.model"),
     "minimum-load band upside down": (["skidding-map", LUBRICATED, "--out", "{out}", "--minimum-load", "9000,4000"],
                                       "--minimum-load"),
 }

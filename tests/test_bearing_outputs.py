@@ -137,9 +137,14 @@ def test_cage_models_table_has_the_three_models():
                                               ["scenario.end_time=0.01", "analysis.start=0.005"]))
     assert [row["model"] for row in rows] == list(comparison.MODELS)
     for row in rows:
-        assert row["status"] == "success", row
+        # the cageless roller set's 5 ms window has not settled (its halves differ by a third of the mean slip):
+        # that run is suspect by window_settled alone (docs/status.md); the table's values are still checked
+        failed = {check["name"] for check in row["checks"] if check["verdict"] == "fail"}
+        assert row["status"] == "success" or (row["model"] == "none" and failed == {"window_settled"}), row
         caged = row["model"] != "none"
         for key, _, _ in comparison.COLUMNS[1:]:
+            if key in ("status", "failed_checks"):  # text columns (docs/status.md)
+                continue
             value = row[key]
             if key in ("max_pocket_force", "max_cage_excursion") and not caged:
                 assert value is None

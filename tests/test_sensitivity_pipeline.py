@@ -136,6 +136,7 @@ def test_failed_runs_are_retried_once_then_recorded_and_never_stop_the_study(cli
     assert (table.loc[~broken & ~transient, "attempts"] == 1).all()
     assert result.stats.errors == table.loc[broken, "key"].nunique()
     assert result.indices["y"].result is None and "no value" in result.indices["y"].note
+    assert result.status == "failed"  # a run that ended in an error counts as failed (exit code 1)
     assert "ended in an error" in result.report.read_text()
     with RunStore(tmp_path / "out") as store:
         assert store.count() == table["key"].nunique()  # every run recorded, errors included
@@ -143,3 +144,29 @@ def test_failed_runs_are_retried_once_then_recorded_and_never_stop_the_study(cli
     assert again.stats.evaluated == 0  # errors are recorded results; --retry-errors runs them again
     retried = run_study(study, tmp_path / "out", client=client, report=False, retry_errors=True)
     assert retried.stats.evaluated == table.loc[broken, "key"].nunique()
+
+
+class Suspicious(IshigamiModel):
+    """Reaches its end everywhere but fails a check for x1 > 2 (a run of ``suspect`` status, as a simulation's)."""
+
+    def evaluate(self, data, keep_result=False):
+        summary, files = super().evaluate(data, keep_result)
+        passed = data["x1"] <= 2
+        check = {"name": "window_settled", "value": data["x1"], "bound": 2.0, "unit": "-",
+                 "verdict": "pass" if passed else "fail", "detail": "" if passed else "x1 beyond 2"}
+        return {**summary, "status": "success" if passed else "suspect", "checks": [check]}, files
+
+
+def test_a_study_is_as_good_as_its_worst_run(client, tmp_path):
+    """Issue 25: the study's status (and the sweep's exit code) is its worst run's; the table names each run's
+    failed checks."""
+    from bearing_mbs.cli.options import exit_code
+
+    study = Study("suspicious", Suspicious(), [Parameter(f"x{i}", (-PI, PI)) for i in (1, 2, 3)], ("y",),
+                  Method("latin", samples=16), seed=3)
+    result = run_study(study, tmp_path / "out", client=client, figures=False)
+    beyond = result.table["x1"] > 2
+    assert beyond.any() and (~beyond).any()
+    assert result.status == "suspect" and exit_code(result.status) == 3
+    assert (result.table.loc[beyond, "failed_checks"] == "window_settled").all()
+    assert (result.table.loc[~beyond, "failed_checks"] == "").all()

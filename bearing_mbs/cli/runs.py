@@ -7,7 +7,6 @@ import logging
 import sys
 
 from bearing_mbs.cli.options import add_output, add_overrides, exit_code, load_with_engine, output_directory
-from bearing_mbs.core.result import FAILED
 from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
@@ -84,7 +83,8 @@ def _add_sweep(commands) -> None:
 
 def _sweep(args) -> int:
     """Exit 0: every run succeeded; 3: some are suspect; 1: some errored or stopped early (all are recorded,
-    the report is written); 2: bad input, nothing ran."""
+    the report is written); 130/143: interrupted; 2: bad input, nothing ran. The study's status is its worst
+    run's (docs/status.md)."""
     import distributed  # noqa: F401  (configures its loggers on import; quieten them after)
 
     from bearing_mbs.core.progress import ProgressMeter, TqdmRunProgress
@@ -98,10 +98,9 @@ def _sweep(args) -> int:
                        retry_errors=args.retry_errors, figures=not args.no_figures)
     counts = result.table.drop_duplicates("key")["status"].value_counts()
     print(f"{study.name}: {len(result.table)} samples, {result.stats.evaluated} runs evaluated now, "
-          f"{result.stats.skipped} already stored; {', '.join(f'{n} {s}' for s, n in counts.items())} "
-          f"-> {result.report}")
-    runs = result.table.drop_duplicates("key")["status"]
-    return exit_code([FAILED if status in ("error", "missing") else status for status in runs])
+          f"{result.stats.skipped} already stored; {', '.join(f'{n} {s}' for s, n in counts.items())}; "
+          f"status {result.status} -> {result.report}")
+    return exit_code(result.status)
 
 
 def _add_stiffness(commands) -> None:
@@ -115,16 +114,18 @@ def _add_stiffness(commands) -> None:
 
 
 def _stiffness(args) -> int:
-    """Exit 0: solved and written; 2: bad input, or a load the bearing cannot carry (nothing written)."""
+    """Exit 0: success; 3: suspect (a check failed; docs/status.md); 2: bad input, or a load the bearing cannot
+    carry (nothing written)."""
+    from bearing_mbs.cli.static import print_outcome
     from bearing_mbs.models.cylindrical_roller.stiffness import require_bearing, write_stiffness
 
     spec = load_spec(args.scenario, args.set)
     require_bearing(spec)
     summary = write_stiffness(spec, output_directory(args), figures=not args.no_figures)
-    print(f"{summary['scenario']}: displacement {summary['radial_displacement']:.4g} m, max roller load "
-          f"{summary['max_roller_load']:.4g} N, K_xx {summary['stiffness_matrix'][0][0]:.4g} N/m, "
-          f"K_yy {summary['stiffness_matrix'][1][1]:.4g} N/m -> {args.out}")
-    return 0
+    print_outcome(summary, lambda s: (f"{s['scenario']}: displacement {s['radial_displacement']:.4g} m, max roller "
+                                      f"load {s['max_roller_load']:.4g} N, K_xx {s['stiffness_matrix'][0][0]:.4g} N/m, "
+                                      f"K_yy {s['stiffness_matrix'][1][1]:.4g} N/m"), args.out)
+    return exit_code(summary["status"])
 
 
 def _add_advise(commands) -> None:

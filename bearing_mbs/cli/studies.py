@@ -130,8 +130,8 @@ def _add_static_check(commands) -> None:
 
 
 def _static_check(args) -> int:
-    """Exit 0: every equilibrium settled; 1: some run stopped early or did not settle (all are written);
-    2: bad input, nothing ran."""
+    """Exit 0: every run succeeded and settled; 3: some are suspect (a failed check, or a window that did not
+    settle); 1: some run stopped early (all are written); 2: bad input, nothing ran."""
     from bearing_mbs.studies import static_check
 
     engines = names(args.engines)
@@ -141,8 +141,7 @@ def _static_check(args) -> int:
     path = static_check.write(check, directory)
     print(static_check.report(check))
     print(f"-> {path}")
-    settled = all(c.equilibrium.settled for c in check.comparisons) and all(s.settled for s in check.stiffness)
-    return 0 if settled else 1
+    return exit_code(check.statuses)
 
 
 def _add_skidding(commands) -> None:
@@ -157,8 +156,8 @@ def _add_skidding(commands) -> None:
 
 
 def _skidding(args) -> int:
-    """Exit 0: every run succeeded; 3: some are suspect; 1: some stopped early (all are written); 2: bad input,
-    nothing ran."""
+    """Exit 0: every run succeeded; 3: some are suspect (a failed check, or a window that did not settle); 1: some
+    stopped early (all are written); 2: bad input, nothing ran."""
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies import skidding
 
@@ -171,7 +170,7 @@ def _skidding(args) -> int:
                           {name: skidding.CAGES[name] for name in cages}, figures=not args.no_figures,
                           progress=ProgressMeter() if args.quiet else TqdmProgress())
     print(skidding.markdown_table(sweeps))
-    print(skidding.trend_text(sweeps) + f"-> {args.out}")
+    print(skidding.trend_text(sweeps) + skidding.status_text(sweeps) + f"-> {args.out}")
     return exit_code([row["status"] for rows in sweeps.values() for row in rows])
 
 
@@ -192,7 +191,8 @@ def _add_skidding_map(commands) -> None:
 
 
 def _skidding_map(args) -> int:
-    """Exit 0: every point solved; 1: some had no balance (all are written); 2: bad input, nothing ran."""
+    """Exit 0: every point solved; 1: some had no balance (``failed``; all are written); 2: bad input, nothing
+    ran."""
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies import skidding_map
 
@@ -208,7 +208,7 @@ def _skidding_map(args) -> int:
     rows = skidding_map.run(spec, output_directory(args), loads, temperatures, speeds, band,
                             figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
     print(skidding_map.markdown_table(rows) + f"-> {args.out}")
-    return 0 if all(row["status"] == "success" for row in rows) else 1
+    return exit_code([row["status"] for row in rows])
 
 
 def _add_cage_models(commands) -> None:
@@ -223,13 +223,13 @@ def _add_cage_models(commands) -> None:
 
 
 def _cage_models(args) -> int:
-    """Exit 0: every run succeeded; 3: some are suspect; 1: some stopped early (all are written); 2: bad input,
-    nothing ran."""
+    """Exit 0: every run succeeded; 3: some are suspect (a failed check, or a window that did not settle); 1: some
+    stopped early (all are written); 2: bad input, nothing ran."""
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies import cage_models
 
     spec = load_spec(args.scenario, args.set)
     rows = cage_models.run(spec, output_directory(args), roller_guided=not args.no_roller_guided,
                            figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
-    print(cage_models.markdown_table(rows) + f"-> {args.out}")
+    print(cage_models.markdown_table(rows) + f"status: {cage_models.comparison_status(rows)} -> {args.out}")
     return exit_code([row["status"] for row in rows])

@@ -57,3 +57,19 @@ def judged(name: str, value, bound, passed: bool, unit: str = "-", failure: str 
 def upper_bound(name: str, value: float | None, bound: float, unit: str = "-", failure: str = "") -> Check:
     """A check that ``value`` ≤ ``bound`` (a missing or non-finite value fails)."""
     return judged(name, value, bound, value is not None and math.isfinite(value) and value <= bound, unit, failure)
+
+
+def lower_bound(name: str, value: float | None, bound: float, unit: str = "-", failure: str = "") -> Check:
+    """A check that ``value`` ≥ ``bound`` (a missing or non-finite value fails)."""
+    return judged(name, value, bound, value is not None and math.isfinite(value) and value >= bound, unit, failure)
+
+
+#: Largest force residual of a quasi-static equilibrium, relative to the load it carries [-]: a millionth, far below
+#: what the quasi-static models leave out (the seed bearing's roller weights, 2 N each on 68 kN, are 3e-5 of it).
+EQUILIBRIUM_RESIDUAL_BOUND = 1e-6
+
+
+def equilibrium_residual(relative_residual: float, failure: str = "") -> Check:
+    """The ``equilibrium_residual`` check of a quasi-static solution: its force residual relative to the load [-]
+    at most :data:`EQUILIBRIUM_RESIDUAL_BOUND` (the solver converged to an equilibrium)."""
+    return upper_bound("equilibrium_residual", relative_residual, EQUILIBRIUM_RESIDUAL_BOUND, "-", failure)

@@ -23,6 +23,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+#: Largest eccentricity ratio a film model is trusted at: beyond it the film is below 5 % of the clearance and metal
+#: contact is near (asperities, form errors and elastic deflection, which a rigid smooth film leaves out, decide).
+FILM_COLLAPSE = 0.95
+
 
 @dataclass(frozen=True)
 class Recesses:

@@ -6,11 +6,15 @@ and, unless told otherwise, of :data:`ROLLER_GUIDED` (the two caged models guide
 dashed); it writes the comparison table as ``cage_models.md`` and ``cage_models.csv`` (:data:`COLUMNS`) and two
 figures, ``cage_models_slip.png`` (cage slip against time) and ``cage_models_loads.png`` (roller load against
 orbital angle).
+
+Each row carries its run's ``status`` and ``checks`` (docs/status.md) with the ``window_settled`` check of its
+analysis window (:mod:`bearing_mbs.studies.settling`); the comparison's status is its worst run's.
 """
 
 from __future__ import annotations
 
 import csv
+import json
 import logging
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,12 +22,14 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.status import failed_check_names, worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
 from bearing_mbs.models.cylindrical_roller.metrics import load_distribution, roller_indices, window
 from bearing_mbs.runner import run_spec, summarize
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.studies.common import with_overrides
+from bearing_mbs.studies.settling import window_settled
 
 log = logging.getLogger(__name__)
 
@@ -50,6 +56,8 @@ COLUMNS = (
     ("steps", "steps", None),
     ("force_evaluations", "force evaluations", None),
     ("energy_balance_error", "energy balance error [-]", 1.0),
+    ("status", "status", None),
+    ("failed_checks", "failed checks", None),
 )
 
 
@@ -77,6 +85,8 @@ def compare(base: Spec, cases: dict[str, dict] | None = None,
     for k, (label, spec) in enumerate(specs.items()):
         progress.next_run(k + 1, len(specs))
         scene, result = run_spec(spec, progress)
+        if result.completed:
+            result.checks = (*result.checks, window_settled(spec, scene, result))
         runs.append(ModelRun(label, spec, scene, result, summarize(spec, scene, result)))
         log.info("%s: cage slip %s (%s)", label, runs[-1].summary.get("cage_slip"), runs[-1].summary["status"])
     return [table_row(r) for r in runs], runs
@@ -90,8 +100,15 @@ def table_row(run: ModelRun) -> dict:
     row["model"] = run.model
     row["max_cage_excursion"] = run.summary.get("max_cage_eccentricity")
     row["status"] = run.summary["status"]
+    row["checks"] = run.summary["checks"]
+    row["failed_checks"] = ", ".join(failed_check_names(run.summary["checks"])) or "—"
     row["warnings"] = run.summary.get("warnings") or []
     return row
+
+
+def comparison_status(rows: list[dict]) -> str:
+    """The comparison's status: its worst run's (docs/status.md)."""
+    return worst_status(row["status"] for row in rows)
 
 
 def markdown_table(rows: list[dict]) -> str:
@@ -104,13 +121,13 @@ def markdown_table(rows: list[dict]) -> str:
 
 
 def write_csv(rows: list[dict], path: Path) -> Path:
-    """The rows as CSV, in the units of the headings."""
+    """The rows as CSV, in the units of the headings, with each run's checks as JSON (last column)."""
     with Path(path).open("w", newline="") as handle:
         writer = csv.writer(handle)
-        writer.writerow([heading for _, heading, _ in COLUMNS])
+        writer.writerow([heading for _, heading, _ in COLUMNS] + ["checks"])
         for row in rows:
             writer.writerow(["" if row[key] is None else row[key] if scale is None else row[key] * scale
-                             for key, _, scale in COLUMNS])
+                             for key, _, scale in COLUMNS] + [json.dumps(row["checks"])])
     return Path(path)
 
 
@@ -155,7 +172,9 @@ def write(rows: list[dict], runs: list[ModelRun], directory: str | Path, figures
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     table = directory / TABLE_FILE
-    table.write_text(markdown_table(rows))
+    others = sum(row["status"] != "success" for row in rows)
+    table.write_text(markdown_table(rows) + f"\nstatus: {comparison_status(rows)} ({others} of {len(rows)} runs not "
+                                            "success; docs/status.md)\n")
     paths = [table, write_csv(rows, directory / CSV_FILE)]
     if figures:
         paths += [plot_cage_slip(runs, directory / SLIP_FIGURE), plot_roller_loads(runs, directory / LOADS_FIGURE)]

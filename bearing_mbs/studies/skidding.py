@@ -17,28 +17,34 @@ At light load the cage and rollers approach it with a time constant of the order
 weak), so a short run reads less slip; compare the window halves.
 
 The penalty cage's slip averaged over a window of duration T is only resolved to about
-:func:`pocket_play_resolution`: the cage may shift by the pocket clearance H relative to the rollers, an angle of
-about 2H/(D_pw/2), whatever the true slip. The constraint cage has no play (resolution 0).
+:func:`~bearing_mbs.studies.settling.pocket_play_resolution`: the cage may shift by the pocket clearance H relative
+to the rollers, an angle of about 2H/(D_pw/2), whatever the true slip. The constraint cage has no play
+(resolution 0).
+
+Each row carries its run's ``status`` and ``checks`` (docs/status.md) with the ``window_settled`` check
+(:mod:`bearing_mbs.studies.settling`): a window whose cage slip has not settled makes its run ``suspect``. The
+study's status is its worst run's (:func:`study_status`).
 """
 
 from __future__ import annotations
 
 import csv
+import json
 import logging
 from pathlib import Path
 
 import numpy as np
 
 from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.status import failed_check_names, worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
-from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
-from bearing_mbs.models.cylindrical_roller.metrics import window
 from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
 from bearing_mbs.runner import run_spec, summarize
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import positive
 from bearing_mbs.studies.common import with_overrides
+from bearing_mbs.studies.settling import pocket_play_resolution, window_halves, window_settled
 
 log = logging.getLogger(__name__)
 
@@ -49,16 +55,12 @@ CAGES = {
     "penalty": {"cage.model": "penalty"},
     "constraint": {"cage.model": "constraint"},
 }
-#: A load counts as settled when the means of its window's two halves differ by less than the pocket-play
-#: resolution of a half window (penalty cage) plus this fraction of the window mean (a light-load run still
-#: approaching its steady slip drifts by more).
-SETTLED_FRACTION = 0.05
 #: Output file names (in the output directory).
 CSV_FILE, TABLE_FILE, FIGURE_FILE = "skidding_vs_load.csv", "skidding_vs_load.md", "skidding_vs_load.png"
 
 COLUMNS = ("cage_model", "radial_load", "total_load", "load_fraction", "cage_slip", "cage_slip_first_half",
            "cage_slip_second_half", "quasi_static_slip", "resolution", "settled", "max_roller_slip_inner", "max_roller_load",
-           "max_pocket_force", "max_cage_eccentricity", "wall_time_s", "steps", "status", "warnings")
+           "max_pocket_force", "max_cage_eccentricity", "wall_time_s", "steps", "status", "warnings", "checks")
 
 
 def check_base(base: Spec, loads) -> None:
@@ -104,13 +106,13 @@ def sweep(base: Spec, loads=LOADS, cages: dict[str, dict] | None = None,
 
 
 def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
-    """One row of the sweep (see :func:`sweep_loads`)."""
+    """One row of the sweep (see :func:`sweep_loads`); the run's checks get ``window_settled`` (a run that stopped
+    early has no checks: its failure says why)."""
+    settled = window_settled(spec, scene, result) if result.completed else None
+    if settled is not None:
+        result.checks = (*result.checks, settled)
     summary = summarize(spec, scene, result)
-    mask = window(spec, result)
-    slip = cage_slip_series(spec, scene, result)[mask]
-    first, second = (float(np.nanmean(half)) for half in np.array_split(slip, 2))
-    duration = float(result.time[mask][-1] - result.time[mask][0])
-    tolerance = pocket_play_resolution(spec, duration / 2) + SETTLED_FRACTION * abs(summary["cage_slip"])
+    first, second, duration = window_halves(spec, scene, result)
     return {
         "cage_model": spec.cage.model,
         "radial_load": spec.load.radial,
@@ -121,7 +123,7 @@ def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
         "cage_slip_second_half": second,
         "quasi_static_slip": quasi_static_slip(scene),
         "resolution": pocket_play_resolution(spec, duration),
-        "settled": bool(abs(first - second) <= tolerance),
+        "settled": settled is not None and settled.passed,
         "max_roller_slip_inner": summary["max_roller_slip_inner"],
         "max_roller_load": summary["max_roller_load"],
         "max_pocket_force": summary["max_pocket_force"],
@@ -130,7 +132,13 @@ def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
         "steps": summary["steps"],
         "status": summary["status"],
         "warnings": "; ".join(summary.get("warnings") or ()),
+        "checks": summary["checks"],
     }
+
+
+def study_status(sweeps: dict[str, list[dict]]) -> str:
+    """The study's status: its worst run's (docs/status.md)."""
+    return worst_status(row["status"] for rows in sweeps.values() for row in rows)
 
 
 def quasi_static_slip(scene) -> float:
@@ -149,18 +157,6 @@ def total_radial_load(spec: Spec) -> float:
     force = spec.load.radial * np.array([np.cos(angle), np.sin(angle)])
     force[1] -= geometry.inner_ring_mass * spec.scenario.gravity
     return float(np.hypot(*force))
-
-
-def pocket_play_resolution(spec: Spec, duration: float) -> float:
-    """Apparent cage slip [-] that the pocket clearance alone can produce over ``duration`` [s]: the cage's angle
-    relative to the roller set varies by up to 2H/(D_pw/2), against the epicyclic angle ω_c,epi · duration.
-    Zero for the constraint cage (its angle is locked to the rollers) and without a cage."""
-    if spec.cage.model != "penalty":
-        return 0.0
-    geometry = BearingGeometry.from_spec(spec.bearing)
-    inner_speed = spec.drive.speed_rpm * 2 * np.pi / 60
-    travel = geometry.epicyclic_cage_speed(inner_speed) * duration
-    return float(2 * geometry.pocket_clearance / (geometry.pitch_diameter / 2) / travel)
 
 
 def trend(rows: list[dict]) -> dict:
@@ -220,11 +216,11 @@ def plot_slip_against_load(sweeps: dict[str, list[dict]], path: Path, title: str
 
 
 def markdown_table(sweeps: dict[str, list[dict]]) -> str:
-    """All rows as a Markdown table (slips in %)."""
+    """All rows as a Markdown table (slips in %), each with its run's status and failed checks."""
     lines = ["| cage | radial load [N] | total load [N] | cage slip [%] | window halves [%] | quasi-static [%] | "
              "resolution [%] | settled | largest inner-raceway slip ratio | max roller load [N] | "
-             "max pocket force [N] | max cage eccentricity [µm] | wall [s] |",
-             "|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"]
+             "max pocket force [N] | max cage eccentricity [µm] | wall [s] | status | failed checks |",
+             "|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|---|"]
     for name, rows in sweeps.items():
         for row in rows:
             lines.append(
@@ -234,8 +230,16 @@ def markdown_table(sweeps: dict[str, list[dict]]) -> str:
                 f"{'yes' if row['settled'] else 'no'} | "
                 f"{_number(row['max_roller_slip_inner']):.3g} | {row['max_roller_load']:.0f} | "
                 f"{_number(row['max_pocket_force']):.0f} | "
-                f"{1e6 * _number(row['max_cage_eccentricity']):.0f} | {row['wall_time_s']:.1f} |")
+                f"{1e6 * _number(row['max_cage_eccentricity']):.0f} | {row['wall_time_s']:.1f} | {row['status']} | "
+                f"{', '.join(failed_check_names(row['checks'])) or '—'} |")
     return "\n".join(lines) + "\n"
+
+
+def status_text(sweeps: dict[str, list[dict]]) -> str:
+    """The study's status line: its worst run's, and how many runs are not ``success``."""
+    rows = [row for rows in sweeps.values() for row in rows]
+    others = sum(row["status"] != "success" for row in rows)
+    return f"status: {study_status(sweeps)} ({others} of {len(rows)} runs not success; docs/status.md)\n"
 
 
 def _number(value) -> float:
@@ -264,9 +268,9 @@ def write(sweeps: dict[str, list[dict]], directory: str | Path, title: str = "",
         writer = csv.DictWriter(handle, COLUMNS)
         writer.writeheader()
         for rows in sweeps.values():
-            writer.writerows(rows)
+            writer.writerows({**row, "checks": json.dumps(row["checks"])} for row in rows)
     markdown = directory / TABLE_FILE
-    markdown.write_text(markdown_table(sweeps) + "\n" + trend_text(sweeps))
+    markdown.write_text(markdown_table(sweeps) + "\n" + trend_text(sweeps) + "\n" + status_text(sweeps))
     paths = [table, markdown]
     if figures:
         paths.append(plot_slip_against_load(sweeps, directory / FIGURE_FILE, title))

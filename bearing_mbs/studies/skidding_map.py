@@ -14,12 +14,16 @@ shaft speed given, a few seconds each where a dynamic run at light load needs se
   speed and temperature).
 
 The rows also give the largest roller slip in and out of the load zone and the largest slide-to-roll ratio Δu/u
-(sliding over rolling speed) of the loaded inner contacts.
+(sliding over rolling speed) of the loaded inner contacts, and each point's ``status`` (docs/status.md):
+``success`` where the balance was found, ``failed`` where it has none (``message`` says why; the point's values are
+NaN); its ``checks`` are empty (a point is one solve, with no window to settle). The map's status is its worst
+point's (:func:`map_status`).
 """
 
 from __future__ import annotations
 
 import csv
+import json
 import logging
 import time
 from pathlib import Path
@@ -27,6 +31,8 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import FAILED, SUCCESS
+from bearing_mbs.core.status import worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models import build_scene
 from bearing_mbs.models.cylindrical_roller.steady_skidding import SkiddingSolution, solve_skidding
@@ -42,13 +48,16 @@ CSV_FILE, TABLE_FILE, FIGURE_FILE, ROLLER_FILE = ("skidding_map.csv", "skidding_
                                                   "roller_slip.png")
 COLUMNS = ("speed_rpm", "temperature", "radial_load", "total_load", "cage_slip", "max_roller_slip_loaded",
            "max_roller_slip_unloaded", "max_inner_slide_to_roll", "friction_torque", "power_loss", "land_torque",
-           "wall_time_s", "status")
+           "wall_time_s", "status", "message", "checks")
 
 
 def check_grid(base: Spec, loads, temperatures, speeds) -> None:
     """Raise :class:`SpecError` before anything runs unless the grid is usable."""
     if base.scenario.model != "bearing":
         raise SpecError("scenario.model", base.scenario.model, "the skidding map varies a bearing scenario")
+    if base.cage.model == "none":
+        raise SpecError("cage.model", base.cage.model, "a caged bearing: the skidding balance is the cage's torque "
+                        "balance")
     if base.lubricant.temperature is None:
         raise SpecError("lubricant.temperature", None, "the skidding map varies a lubricated scenario: give the "
                         "oil and its temperature in [lubricant]")
@@ -68,7 +77,8 @@ def point(base: Spec, speed: float, temperature: float, load: float) -> tuple[di
     """One row of the map and its solution (None where the balance has no solution; the row says why)."""
     spec = with_overrides(base, {"drive.speed_rpm": float(speed), "lubricant.temperature": float(temperature),
                                  "load.radial": float(load)})
-    row = {"speed_rpm": speed, "temperature": temperature, "radial_load": load, "total_load": total_radial_load(spec)}
+    row = {"speed_rpm": speed, "temperature": temperature, "radial_load": load, "total_load": total_radial_load(spec),
+           "message": "", "checks": []}
     start = time.perf_counter()
     try:
         solution = solve_skidding(build_scene(spec))
@@ -77,7 +87,7 @@ def point(base: Spec, speed: float, temperature: float, load: float) -> tuple[di
         nan = float("nan")
         row.update(cage_slip=nan, max_roller_slip_loaded=nan, max_roller_slip_unloaded=nan,
                    max_inner_slide_to_roll=nan, friction_torque=nan, power_loss=nan, land_torque=nan,
-                   status=f"failed: {error}")
+                   status=FAILED, message=f"no skidding balance: {error}")
         row["wall_time_s"] = time.perf_counter() - start
         return row, None
     loaded = solution.inner_loads > 0
@@ -86,8 +96,13 @@ def point(base: Spec, speed: float, temperature: float, load: float) -> tuple[di
                max_roller_slip_unloaded=_largest(solution.roller_slip[~loaded]),
                max_inner_slide_to_roll=_largest(slide_to_roll),
                friction_torque=-solution.ring_torque, power_loss=solution.power_loss,
-               land_torque=solution.land_torque, wall_time_s=time.perf_counter() - start, status="success")
+               land_torque=solution.land_torque, wall_time_s=time.perf_counter() - start, status=SUCCESS)
     return row, solution
+
+
+def map_status(rows: list[dict]) -> str:
+    """The map's status: its worst point's (docs/status.md)."""
+    return worst_status(row["status"] for row in rows)
 
 
 def _largest(values: np.ndarray) -> float:
@@ -113,7 +128,7 @@ def run(base: Spec, directory: str | Path, loads, temperatures, speeds, minimum_
     with (directory / CSV_FILE).open("w", newline="") as handle:
         writer = csv.DictWriter(handle, COLUMNS)
         writer.writeheader()
-        writer.writerows(rows)
+        writer.writerows({**row, "checks": json.dumps(row["checks"])} for row in rows)
     (directory / TABLE_FILE).write_text(markdown_table(rows))
     if figures:
         title = f"{base.scenario.name}: quasi-static skidding balance"
@@ -142,7 +157,11 @@ def markdown_table(rows: list[dict]) -> str:
             cells = [f"{scale * value[(s, t, load)][field]:.3g}" for s, t in keys]
             lines.append(f"| {load:g} | " + " | ".join(cells) + " |")
         lines.append("")
-    return "\n".join(lines)
+    failed = [row for row in rows if row["status"] != SUCCESS]
+    lines += [f"status: {map_status(rows)} ({len(failed)} of {len(rows)} points without a balance; docs/status.md)"]
+    lines += [f"- {row['speed_rpm']:g} rpm, {row['temperature']:g} °C, {row['radial_load']:g} N: {row['message']}"
+              for row in failed]
+    return "\n".join(lines) + "\n"
 
 
 def plot_map(rows: list[dict], path: Path, minimum_load, title: str = "") -> Path:

@@ -20,8 +20,10 @@ function without an analytic Jacobian. Instead each engine *settles* a resting b
   the contacts' Lankarani–Nikravesh damping and the regularised friction damp what is left;
 * the equilibrium is the mean over the last ``window`` seconds: ring displacement, each roller's
   inner-raceway force and orbital angle. It is *settled* when the mean displacements of the two halves of the
-  window differ by less than ``drift_tolerance`` of :math:`|u|` and the displacement stays within
-  ``amplitude_tolerance`` of its mean.
+  window differ by less than ``drift_tolerance`` of :math:`|u|` (the ``window_drift`` check) and the
+  displacement stays within ``amplitude_tolerance`` of its mean (``window_amplitude``), and the run passed its
+  own checks: its status (docs/status.md) is then ``success``; a window that has not settled makes it
+  ``suspect``. The study's status is its worst run's (:attr:`StaticCheck.status`).
 
 At rest the step residuals are tiny: Exudyn's relative Newton tolerance must not sit at round-off
 (``scenarios/static_check.toml`` sets 1e-6; at 1e-8 generalized-α halves its step again and again, 50 times
@@ -57,7 +59,10 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.checks import Check, upper_bound
+from bearing_mbs.core.result import SUCCESS
 from bearing_mbs.core.scene import Profile
+from bearing_mbs.core.status import worst_status
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models import load_spec
 from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
@@ -136,7 +141,9 @@ class StaticEquilibrium:
     applied: the external load (F_x, F_y) [N]; load: what the rollers carry, applied plus the ring's weight
     [N]; displacement: inner-ring centre (x, y) [m]; roller_angles: orbital angles [rad]; roller_loads:
     inner-raceway forces [N], in roller order; drift, amplitude [-] (relative to |u|); residual_speed: the
-    largest inner-ring centre speed in the window [m/s]; steps, wall_time_s: the run's cost.
+    largest inner-ring centre speed in the window [m/s]; settled: the run's status is ``success`` (its own checks
+    and the window's passed); status, message and checks: the run's, with ``window_drift`` and
+    ``window_amplitude``; steps, wall_time_s: the run's cost.
     """
 
     engine: str
@@ -154,10 +161,16 @@ class StaticEquilibrium:
     message: str
     steps: int
     wall_time_s: float
+    checks: tuple[Check, ...] = ()
 
     @property
     def max_roller_load(self) -> float:
         return float(self.roller_loads.max())
+
+    def outcome(self) -> dict:
+        """The run's applied load [N], status, message and checks (as dicts)."""
+        return {"applied_N": [float(v) for v in self.applied], "status": self.status, "message": self.message,
+                "checks": [check.to_dict() for check in self.checks]}
 
 
 def static_equilibrium(spec: Spec, applied, settings: SettlingSettings = SettlingSettings(),
@@ -179,7 +192,9 @@ def static_equilibrium(spec: Spec, applied, settings: SettlingSettings = Settlin
     angles = np.unwrap(roller_orbit_angles(scene, result)[mask], axis=0).mean(axis=0)
     loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].mean(axis=0)
     speed = float(np.max(np.hypot(*result.velocity[mask][:, :2].T)))
-    settled = result.success and drift <= settings.drift_tolerance and amplitude <= settings.amplitude_tolerance
+    if result.completed:
+        result.checks = (*result.checks, *settling_checks(settings, drift, amplitude))
+    settled = result.status == SUCCESS
     if not settled:
         log.warning("%s on %s did not settle: %s, drift %.2e, amplitude %.2e", spec.scenario.name, result.engine,
                     result.message or result.status, drift, amplitude)
@@ -188,7 +203,18 @@ def static_equilibrium(spec: Spec, applied, settings: SettlingSettings = Settlin
         load=quasi_static_load(spec, applied), displacement=displacement, roller_angles=np.mod(angles, 2 * np.pi),
         roller_loads=loads, drift=drift, amplitude=amplitude, residual_speed=speed, settled=settled,
         status=result.status, message=result.message, steps=result.stats.steps,
-        wall_time_s=result.stats.wall_time_s)
+        wall_time_s=result.stats.wall_time_s, checks=result.checks)
+
+
+def settling_checks(settings: SettlingSettings, drift: float, amplitude: float) -> tuple[Check, Check]:
+    """``window_drift`` (the window halves' mean displacements apart, relative to |u|) and ``window_amplitude`` (the
+    largest excursion from the mean, relative to |u|) against ``settings``' tolerances."""
+    fix = (f"Likely fix: a longer hold (SettlingSettings.hold, {settings.hold:g} s now, e.g. {2 * settings.hold:g} s): "
+           "the contacts' damping, proportional to the load, settles a light load slowest")
+    return (upper_bound("window_drift", drift, settings.drift_tolerance, "-",
+                        f"the ring still moves: its window halves are {drift:.2e} |u| apart. {fix}"),
+            upper_bound("window_amplitude", amplitude, settings.amplitude_tolerance, "-",
+                        f"the ring still oscillates by {amplitude:.2e} |u| about its mean. {fix}"))
 
 
 def quasi_static_rest(spec: Spec, applied):
@@ -234,6 +260,7 @@ class StaticComparison:
             "max_roller_load_error": self.max_roller_load_error, "roller_load_error": self.roller_load_error,
             "settled": eq.settled, "drift": eq.drift, "amplitude": eq.amplitude,
             "residual_speed_m_s": eq.residual_speed, "steps": eq.steps, "wall_time_s": eq.wall_time_s,
+            "status": eq.status, "message": eq.message, "checks": [check.to_dict() for check in eq.checks],
         }
 
 
@@ -273,10 +300,16 @@ class StiffnessCheck:
     def settled(self) -> bool:
         return all(eq.settled for eq in self.equilibria)
 
+    @property
+    def status(self) -> str:
+        """The worst status of its four runs."""
+        return worst_status(eq.status for eq in self.equilibria)
+
     def row(self) -> dict:
         return {"engine": self.engine, "load_N": [float(v) for v in self.applied], "step_N": self.step,
                 "dynamic": self.dynamic.tolist(), "secant": self.secant.tolist(), "analytic": self.analytic.tolist(),
-                "error": self.error, "secant_error": self.secant_error, "settled": self.settled}
+                "error": self.error, "secant_error": self.secant_error, "settled": self.settled,
+                "status": self.status, "runs": [eq.outcome() for eq in self.equilibria]}
 
 
 def finite_difference_stiffness(spec: Spec, applied, relative_step: float = 0.05,
@@ -339,8 +372,20 @@ class StaticCheck:
     comparisons: tuple[StaticComparison, ...]
     stiffness: tuple[StiffnessCheck, ...]
 
+    @property
+    def statuses(self) -> list[str]:
+        """The status of every run."""
+        return [c.equilibrium.status for c in self.comparisons] + [eq.status for s in self.stiffness
+                                                                   for eq in s.equilibria]
+
+    @property
+    def status(self) -> str:
+        """The study's status: its worst run's (docs/status.md)."""
+        return worst_status(self.statuses)
+
     def to_dict(self) -> dict:
-        return {"static": [c.row() for c in self.comparisons], "stiffness": [s.row() for s in self.stiffness]}
+        return {"status": self.status, "static": [c.row() for c in self.comparisons],
+                "stiffness": [s.row() for s in self.stiffness]}
 
 
 def run(scenario: str | Path, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides=(),
@@ -377,16 +422,20 @@ def report(check: StaticCheck) -> str:
     """The check as a plain-text table: displacements [µm] and largest roller loads [N], dynamic against
     quasi-static, then each engine's stiffness matrix [N/m]."""
     lines = [f"{'engine':10} {'F [N]':>8} {'|u| dyn [um]':>13} {'|u| qs [um]':>12} {'err u':>9} "
-             f"{'Qmax dyn [N]':>13} {'Qmax qs [N]':>12} {'err Qmax':>9} {'settled':>7}"]
+             f"{'Qmax dyn [N]':>13} {'Qmax qs [N]':>12} {'err Qmax':>9} {'settled':>7} {'status':>11}"]
     for row in (c.row() for c in check.comparisons):
         lines.append(f"{row['engine']:10} {row['load_N']:8.0f} {row['displacement_dynamic_m'] * 1e6:13.4f} "
                      f"{row['displacement_quasi_static_m'] * 1e6:12.4f} {row['displacement_error']:9.2e} "
                      f"{row['max_roller_load_dynamic_N']:13.1f} {row['max_roller_load_quasi_static_N']:12.1f} "
-                     f"{row['max_roller_load_error']:9.2e} {row['settled']!s:>7}")
+                     f"{row['max_roller_load_error']:9.2e} {row['settled']!s:>7} {row['status']:>11}")
     for item in check.stiffness:
         lines.append(f"{item.engine}: K dynamic [N/m] {np.array2string(item.dynamic, precision=4)}\n"
                      f"  analytic {np.array2string(item.analytic, precision=4)}\n"
-                     f"  error {item.error:.2e} (quasi-static secant {item.secant_error:.2e})")
+                     f"  error {item.error:.2e} (quasi-static secant {item.secant_error:.2e}); runs {item.status}")
+    runs = [c.equilibrium for c in check.comparisons] + [eq for s in check.stiffness for eq in s.equilibria]
+    lines += [f"check {eq.engine} at {np.hypot(*eq.applied):.0f} N: {item.line()}" for eq in runs
+              for item in eq.checks if not item.passed]
+    lines.append(f"status: {check.status} (the worst of {len(runs)} runs; docs/status.md)")
     return "\n".join(lines)
 
 

@@ -18,6 +18,9 @@ A ``bearing`` scenario is turned into the inputs of
   :math:`F_c = m_r (D_{pw}/2)\omega_c^2`; 0 gives none.
 * **roller phase**: roller 0 sits on the load line (``first_roller_angle`` = the load's direction), the
   configuration of the largest roller load that a turning bearing passes through.
+
+The summary's ``status`` and ``checks`` (:func:`stiffness_checks`; docs/status.md) say whether its numbers can be
+used.
 """
 
 from __future__ import annotations
@@ -28,15 +31,25 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.checks import Check, equilibrium_residual, lower_bound, upper_bound
+from bearing_mbs.core.status import status_entries
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models.cylindrical_roller.build import group_law
 from bearing_mbs.models.cylindrical_roller.drivetrain import RPM, steady_speed
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, plot_load_distribution, solve_radial
+from bearing_mbs.models.cylindrical_roller.spec import static_load_rating
 from bearing_mbs.spec import Spec, SpecError
 
 SUMMARY_FILE = "summary.json"
 FIGURE_FILE = "load_distribution.png"
+#: Fewest loaded rollers for a 2×2 stiffness: one roller resists the ring only along its own line, so the stiffness
+#: across it is zero and the matrix singular.
+MIN_LOADED_ROLLERS = 2
+#: Largest load over the ISO 76 static load rating C0 (:func:`~.spec.static_load_rating`) [-]: at C0 the most loaded
+#: contact of a roller bearing reaches 4000 MPa and deforms permanently by 1e-4 of the roller diameter; beyond it
+#: the raceways yield, which Palmgren's elastic law leaves out.
+MAX_STATIC_LOAD_RATIO = 1.0
 
 
 def require_bearing(spec: Spec) -> None:
@@ -100,6 +113,7 @@ def stiffness_summary(spec: Spec, solution, law: str) -> dict:
     angles = np.mod(np.degrees(solution.roller_angles), 360.0)
     summary = {
         "scenario": spec.scenario.name,
+        **status_entries(stiffness_checks(spec, solution)),
         "model": "quasi-static planar (solve_radial)",
         "raceway_law": law,
         "inner_stiffness": solution.rollers.inner_stiffness,
@@ -126,6 +140,28 @@ def stiffness_summary(spec: Spec, solution, law: str) -> dict:
     }
     summary["units"] = {key: unit for key, unit in STIFFNESS_UNITS.items() if key in summary}
     return summary
+
+
+def stiffness_checks(spec: Spec, solution) -> list[Check]:
+    """The checks of a quasi-static solution (docs/status.md): the equilibrium reached, enough rollers loaded for a
+    stiffness matrix, the load within the elastic range."""
+    load = float(np.hypot(*solution.load))
+    scale = max(load, float(np.sum(solution.inner_loads)))
+    loaded = int(np.count_nonzero(solution.inner_loads > 0))
+    rating = static_load_rating(spec.bearing)
+    largest_load = MAX_STATIC_LOAD_RATIO * rating
+    return [
+        equilibrium_residual(solution.residual / scale if scale > 0 else 0.0,
+                             f"the inner ring's equilibrium was reached only to {solution.residual:.3g} N on "
+                             f"{load:.4g} N. Likely fix: a smaller bearing.diametral_clearance, or a larger load"),
+        lower_bound("rollers_in_contact", loaded, MIN_LOADED_ROLLERS, "count",
+                    f"{loaded} roller(s) carry the load: the ring has no stiffness across the load line. Likely fix: "
+                    "less clearance (bearing.diametral_clearance <= 0 loads half the rollers) or a larger load.radial"),
+        upper_bound("static_load_ratio", load / rating, MAX_STATIC_LOAD_RATIO, "-",
+                    f"the load is {load / rating:.3g} times the bearing's static load rating C0 = {rating:.4g} N (ISO "
+                    "76): the most loaded contact exceeds 4000 MPa and the raceways yield, which the elastic law leaves "
+                    f"out. Likely fix: load.radial <= {largest_load:.4g} N"),
+    ]
 
 
 #: Units of the stiffness summary's entries.

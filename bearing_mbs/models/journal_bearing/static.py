@@ -4,7 +4,8 @@ its ``units`` map) and figures.
 At the scenario's eccentricity: load, attitude, flow, friction, recess pressures, the eight dynamic coefficients
 and the static stiffness ΔF/Δe (:mod:`bearing_mbs.fluid_film`); along the same direction, the load and static
 stiffness against eccentricity; for capillary recesses at zero speed with the eccentricity towards the first
-recess, document 001's resistance network beside the full solution.
+recess, document 001's resistance network beside the full solution. The summary's ``status`` and ``checks``
+(:mod:`.checks`; docs/status.md) say whether the numbers can be used.
 """
 
 from __future__ import annotations
@@ -14,22 +15,25 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.status import status_entries
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.network import network_recess_pressures
-from bearing_mbs.fluid_film.restrictors import (Capillary, ConstantFlow, DirectSupply, Orifice, capillary_resistance,
-                                                capillary_reynolds)
-from bearing_mbs.fluid_film.reynolds import FilmSolution, JournalState, Supply, solve_film
+from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply, Orifice, capillary_resistance
+from bearing_mbs.fluid_film.reynolds import FilmNotConverged, FilmSolution, JournalState, Supply, solve_film
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import json_safe, rounded, write_json
+from bearing_mbs.models.journal_bearing.checks import (
+    journal_checks,
+    largest_capillary_reynolds,
+    mass_balance_error,
+    taylor_number,
+)
 from bearing_mbs.models.journal_bearing.spec import JournalSpec
 
 SUMMARY_FILE = "summary.json"
 #: Eccentricity ratios of the load curve.
 CURVE_ECCENTRICITIES = (0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9)
-#: Laminar bounds checked after the solve: capillary Re = 4ρq/(πμd) (Rowe 2012) and the film's Taylor number
-#: Ta = ρΩRC/μ · sqrt(C/R) < 41.3 (Taylor vortices; Hamrock, Schmid & Jacobson 2004, ch. 3).
-CAPILLARY_REYNOLDS_LIMIT, TAYLOR_LIMIT = 2000.0, 41.3
 UNITS = {"load_capacity": "N", "force": "N", "attitude_angle": "deg", "flow": "m^3/s", "friction_torque": "N m",
          "friction_power": "W", "recess_pressures": "Pa", "recess_flows": "m^3/s", "stiffness": "N/m",
          "damping": "N s/m", "static_stiffness": "N/m", "static_stiffness_per_eccentricity_ratio": "N",
@@ -75,8 +79,10 @@ def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
              for eps in CURVE_ECCENTRICITIES]
     stiff = static_stiffness(force, state, j.radial_clearance)
     h_min = float(grid.land_film(grid.theta, state.eccentricity).min())
+    checks = journal_checks(spec, bearing, supply, grid, state, film, h_min)
     summary = {
-        "scenario": spec.scenario.name, "model": spec.scenario.model, "cavitation": j.cavitation,
+        "scenario": spec.scenario.name, "model": spec.scenario.model, **status_entries(checks),
+        "cavitation": j.cavitation,
         "grid": list(j.grid), "eccentricity_ratio": j.eccentricity_ratio, "speed_rpm": j.speed_rpm,
         "load_capacity": film.load_capacity, "force": film.force.tolist(), "attitude_angle": film.attitude_angle,
         "flow": film.supply_flow if supply is not None else film.edge_outflow,
@@ -86,34 +92,16 @@ def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
         "stiffness": stiffness.tolist(), "damping": damping.tolist(), "static_stiffness": stiff,
         "static_stiffness_per_eccentricity_ratio": stiff * j.radial_clearance,
         "min_film_thickness": h_min, "max_pressure": float(film.load_pressure.max()),
-        "mass_balance_error": abs(film.supply_flow - film.edge_outflow - film.volume_rate)
-        / max(abs(film.edge_outflow), 1e-300),
+        "mass_balance_error": mass_balance_error(j, film),
         "load_curve": [list(row) for row in curve],
+        "taylor_number": taylor_number(j),
     }
-    summary.update(_laminar_checks(spec, film, supply))
+    reynolds = largest_capillary_reynolds(j, film, supply)
+    if reynolds is not None:
+        summary["capillary_reynolds"] = reynolds
     summary.update(_network(spec, bearing, supply, film))
     summary["units"] = {key: unit for key, unit in UNITS.items() if key in summary}
     return rounded(json_safe(summary)), film, curve
-
-
-def _laminar_checks(spec, film, supply) -> dict:
-    j = spec.journal
-    taylor = j.density * abs(j.speed) * j.diameter / 2 * j.radial_clearance / j.viscosity \
-        * math.sqrt(2 * j.radial_clearance / j.diameter)
-    found = {"taylor_number": taylor}
-    warnings = []
-    if taylor > TAYLOR_LIMIT:
-        warnings.append(f"taylor_number = {taylor:.3g} > {TAYLOR_LIMIT}: Taylor vortices, the laminar film model "
-                        "does not hold")
-    if supply is not None and isinstance(supply.restrictor, Capillary):
-        reynolds = max(capillary_reynolds(q, supply.restrictor.diameter, j.viscosity, j.density)
-                       for q in film.supply_flows)
-        found["capillary_reynolds"] = reynolds
-        if reynolds > CAPILLARY_REYNOLDS_LIMIT:
-            warnings.append(f"capillary_reynolds = {reynolds:.3g} > {CAPILLARY_REYNOLDS_LIMIT:g}: the capillary "
-                            "is not laminar; its resistance law does not hold")
-    found["warnings"] = warnings
-    return found
 
 
 def _network(spec, bearing, supply, film) -> dict:
@@ -129,10 +117,18 @@ def _network(spec, bearing, supply, film) -> dict:
 
 
 def write_journal(spec: JournalSpec, directory: str | Path, figures: bool = True) -> dict:
-    """Solve the scenario and write ``summary.json`` (and the figures) to ``directory``."""
+    """Solve the scenario and write ``summary.json`` (and the figures) to ``directory``. A film whose solve does not
+    settle (:class:`~bearing_mbs.fluid_film.reynolds.FilmNotConverged`) gives a ``failed`` summary that says why,
+    without figures."""
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
-    summary, film, curve = journal_summary(spec)
+    try:
+        summary, film, curve = journal_summary(spec)
+    except FilmNotConverged as error:
+        summary = {"scenario": spec.scenario.name, "model": spec.scenario.model,
+                   **status_entries((), f"{error}. Likely fix: journal.cavitation = 'gumbel' or a finer journal.grid")}
+        write_json(directory / SUMMARY_FILE, summary)
+        return summary
     write_json(directory / SUMMARY_FILE, summary)
     if figures:
         _plot_pressure(spec, film, directory / "pressure_map.png")

@@ -8,12 +8,11 @@ from pathlib import Path
 import numpy as np
 from scipy.signal import find_peaks
 
+from bearing_mbs.fluid_film.journal import FILM_COLLAPSE
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.rotor.build import equilibrium, map_error, whirl_threshold
 from bearing_mbs.models.rotor.spec import RotorSpec
 
-#: Largest eccentricity ratio a film model is trusted at (beyond: metal contact is near).
-FILM_COLLAPSE = 0.95
 #: Orbits below this fraction of the clearance count as small (linear) motion for the growth rate.
 LINEAR_ORBIT = 0.1
 

@@ -40,6 +40,11 @@ from bearing_mbs.spec import SpecError
 COORDINATES = ("radial", "axial", "tilt")
 
 
+class NotConverged(RuntimeError):
+    """:func:`solve`'s Newton loop did not reach its tolerance (e.g. too few balls to hold the ring: a singular
+    stiffness)."""
+
+
 def diagonal_stiffness(ball_diameter: float, conformity: float, pitch_diameter: float, contact_angle: float,
                        youngs_modulus: float, poisson_ratio: float) -> float:
     """K [N/m^1.5] of one diagonal: the ball's inner-ring and outer-ring Hertz contacts in series,
@@ -164,4 +169,4 @@ def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = 
                 break
             factor /= 2
         x = trial
-    raise RuntimeError(f"the load distribution did not converge in {iterations} iterations (residual {norm:.3g})")
+    raise NotConverged(f"the load distribution did not converge in {iterations} iterations (residual {norm:.3g})")

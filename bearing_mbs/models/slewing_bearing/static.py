@@ -5,6 +5,9 @@
   ball load and contact pressure (exact Hertz, :mod:`bearing_mbs.contact.point_contact`), the 3×3 stiffness;
 * with ``axial_displacements``: the axial load–deflection curve, drawn with the engineering formula (3) of
   document 002 for comparison (with flexible rings, the rigid rings' curve beside it).
+
+The summary's ``status`` and ``checks`` (docs/status.md) say whether the numbers can be used: enough balls to hold
+the ring, the equilibrium reached, the contact pressure within the elastic range.
 """
 
 from __future__ import annotations
@@ -15,14 +18,23 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_contact
+from bearing_mbs.core.checks import Check, equilibrium_residual, lower_bound, upper_bound
+from bearing_mbs.core.status import status_entries
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings
-from bearing_mbs.models.slewing_bearing.load_distribution import Distribution, SlewingBearing, solve
+from bearing_mbs.models.slewing_bearing.load_distribution import Distribution, NotConverged, SlewingBearing, solve
 from bearing_mbs.models.slewing_bearing.spec import SlewingSpec
 from bearing_mbs.spec import SpecError
 
 SUMMARY_FILE = "summary.json"
+#: Fewest balls that hold a ring in all its degrees of freedom: balls at three azimuths or more, not on one diameter
+#: (with fewer, the ring tilts freely about the line through them; the planar model's stiffness is singular).
+MIN_BALLS = 3
+#: Largest contact pressure [Pa] of the elastic (Hertz) contacts: ISO 76's static load rating of ball bearings
+#: (other than self-aligning) is the load at 4200 MPa, where the permanent deformation of ball and raceway is about
+#: 1e-4 of the ball diameter; beyond it the raceways yield, which the elastic model leaves out.
+MAX_CONTACT_PRESSURE = 4200e6
 UNITS = {"displacement": "m, m, rad", "load": "N, N, N m", "stiffness": "SI (N/m, N/rad, N m/m, N m/rad)",
          "axial_curve": "m, N", "max_ball_load": "N", "max_contact_pressure": "Pa", "ball_loads": "N",
          "contact_angles": "deg", "azimuths": "deg", "balls": "count", "diagonal_stiffness": "N/m^1.5",
@@ -65,13 +77,41 @@ def largest_pressure(spec: SlewingSpec, state: Distribution) -> float:
 
 
 def slewing_summary(spec: SlewingSpec) -> tuple[dict, list[Distribution]]:
+    """The summary (with ``status`` and ``checks``, docs/status.md) and the solved states (none when the solver
+    did not converge: the summary is then ``failed`` and says why)."""
     bearing = bearing_of(spec)
-    load = spec.load
     rings = rings_of(spec)
     summary = {"scenario": spec.scenario.name, "balls": bearing.balls, "diagonal_stiffness": bearing.stiffness,
                "rings": spec.slewing.rings}
     if rings is not None:
         summary["mount"] = spec.slewing.mount
+    count = lower_bound("ball_count", bearing.balls, MIN_BALLS, "count",
+                        f"{bearing.balls} ball(s) cannot hold the ring: it tilts freely about the line through them. "
+                        f"Likely fix: slewing.balls >= {MIN_BALLS} (or leave it out: as many as fit, "
+                        f"{ball_count_that_fits(spec)})")
+    try:
+        checks, states = _solve(spec, bearing, rings, summary)
+    except NotConverged as error:
+        summary = {"scenario": spec.scenario.name, **status_entries([count], f"{error}. Likely fix: "
+                                                                    f"slewing.balls >= {MIN_BALLS}, or a smaller load"),
+                   **summary}
+        return rounded(json_safe(summary)), []
+    summary = {"scenario": spec.scenario.name, **status_entries([count, *checks]), **summary}
+    summary["units"] = {key: unit for key, unit in UNITS.items() if key in summary}
+    return rounded(json_safe(summary)), states
+
+
+def ball_count_that_fits(spec: SlewingSpec) -> int:
+    """The balls that fit side by side on the pitch circle (the default of ``slewing.balls``)."""
+    from bearing_mbs.models.slewing_bearing.geometry import ball_count
+
+    return ball_count(spec.slewing.pitch_diameter, spec.slewing.ball_diameter)
+
+
+def _solve(spec: SlewingSpec, bearing: SlewingBearing, rings, summary: dict) -> tuple[list[Check], list]:
+    """Solve the curve or the load case into ``summary``; returns the checks of the solution and the states."""
+    load = spec.load
+    checks = []
     if load.axial_displacements:
         states = [solve(bearing, imposed={"radial": 0.0, "axial": d, "tilt": 0.0}, rings=rings)
                   for d in load.axial_displacements]
@@ -81,20 +121,33 @@ def slewing_summary(spec: SlewingSpec) -> tuple[dict, list[Distribution]]:
                                                                               "tilt": 0.0}).load[1])]
                                             for d in load.axial_displacements]
     else:
-        states = [solve(bearing, (load.radial, load.axial, load.moment), rings=rings)]
+        target = np.array([load.radial, load.axial, load.moment])
+        states = [solve(bearing, target, rings=rings)]
         summary["displacement"] = states[0].displacement.tolist()
         summary["load"] = states[0].load.tolist()
+        scale = max(np.abs(target).max(), states[0].ball_loads.sum())
+        checks.append(equilibrium_residual(float(np.abs(states[0].load - target).max() / scale),
+                                           "the inner ring's equilibrium was not reached. Likely fix: slewing.balls "
+                                           f">= {MIN_BALLS}, or a smaller load"))
     last = max(states, key=lambda state: state.ball_loads.max())
+    pressure = largest_pressure(spec, last)
     summary.update({
         "max_ball_load": float(last.ball_loads.max()),
-        "max_contact_pressure": largest_pressure(spec, last),
+        "max_contact_pressure": pressure,
         "stiffness": last.stiffness.tolist(),
         "azimuths": np.degrees(last.azimuths).tolist(),
         "ball_loads": last.ball_loads.tolist(),
         "contact_angles": np.degrees(last.contact_angles).tolist(),
     })
-    summary["units"] = {key: unit for key, unit in UNITS.items() if key in summary}
-    return rounded(json_safe(summary)), states
+    ratio = MAX_CONTACT_PRESSURE / pressure if pressure > 0 else 1.0
+    # Hertz: p ∝ Q^(1/3) and Q ∝ δ^(3/2), so p ∝ δ^(1/2)
+    fix = (f"load.axial_displacements up to about {ratio ** 2 * max(load.axial_displacements):.3g} m"
+           if load.axial_displacements else f"a load about {ratio ** 3:.3g} times the present one")
+    checks.append(upper_bound("contact_pressure", pressure, MAX_CONTACT_PRESSURE, "Pa",
+                              f"the most loaded ball's contact reaches {pressure / 1e6:.4g} MPa, beyond ISO 76's "
+                              f"{MAX_CONTACT_PRESSURE / 1e6:g} MPa: the raceways yield, which the elastic (Hertz) "
+                              f"contacts leave out. Likely fix: {fix}, or a larger slewing.ball_diameter"))
+    return checks, states
 
 
 def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True) -> dict:
@@ -103,7 +156,7 @@ def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True
     directory.mkdir(parents=True, exist_ok=True)
     summary, states = slewing_summary(spec)
     write_json(directory / SUMMARY_FILE, summary)
-    if figures:
+    if figures and states:
         _plot_around_the_ring(spec, states[-1], directory / "ball_loads.png")
         if spec.load.axial_displacements:
             _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png", summary.get("rigid_axial_curve"))

@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 
 from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.status import worst_status
 from bearing_mbs.studies.sensitivity.analysis import Indices, analyze
 from bearing_mbs.studies.sensitivity.execution import EvaluationStats, connect, evaluate
 from bearing_mbs.studies.sensitivity.runs import plan
@@ -38,6 +39,12 @@ class StudyResult:
     def complete(self) -> bool:
         """Every run is recorded and none ended in an error or stopped early."""
         return bool((self.table["status"] == "success").all())
+
+    @property
+    def status(self) -> str:
+        """The study's status, its worst run's (docs/status.md); a run that ended in an error or is missing counts
+        as ``failed``."""
+        return worst_status(self.table.drop_duplicates("key")["status"])
 
 
 def run_study(study: Study, out, client=None, scheduler: str | None = None, workers: int | None = None,

@@ -12,6 +12,7 @@ import matplotlib.ticker
 import numpy as np
 import pandas as pd
 
+from bearing_mbs.core.status import worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.studies.sensitivity.analysis import Indices
 from bearing_mbs.studies.sensitivity.study import Study
@@ -71,6 +72,7 @@ def _overview(study: Study, table: pd.DataFrame) -> list[str]:
               "sobol": f"Sobol'–Saltelli, N = {m.samples}" + (", second order" if m.second_order else "")}
     runs = table.drop_duplicates("key")
     counts = runs["status"].value_counts()
+    failed_checks = sorted({name for names in runs.get("failed_checks", ()) for name in names.split(", ") if name})
     statuses = ", ".join(f"{counts[s]} {s}" for s in ("success", "suspect", "failed", "interrupted", "error", "missing")
                          if s in counts)
     cost = float(np.nansum(runs["wall_time_s"].astype(float)))
@@ -83,6 +85,8 @@ def _overview(study: Study, table: pd.DataFrame) -> list[str]:
         f"| analysis | {analysis} |",
         f"| seed | {study.seed} |",
         f"| runs | {len(table)} samples, {len(runs)} distinct runs: {statuses} |",
+        f"| status | {worst_status(runs['status'])} (the worst run's; docs/status.md)"
+        + (f"; failed checks: {', '.join(failed_checks)}" if failed_checks else "") + " |",
         f"| cost | {cost:.4g} s of run time summed over the workers |",
         "",
     ]
@@ -118,7 +122,8 @@ def _indices_section(study: Study, result: Indices, directory: Path, figures: bo
 
 
 def _runs_section(study: Study, table: pd.DataFrame, h: str) -> list[str]:
-    columns = [*study.names, *study.outputs, "status", "attempts", "wall_time_s", "key"]
+    columns = [*study.names, *study.outputs, "status", "failed_checks", "attempts", "wall_time_s", "key"]
+    columns = [c for c in columns if c in table.columns]
     lines = [f"{h}# Runs", "", f"Table of runs: [`{RUNS_FILE}`]({RUNS_FILE}) ({len(table)} rows). "
              f"First {min(INLINE_RUNS, len(table))}:", "",
              "| sample | " + " | ".join(f"`{c}`" if c in study.names or c in study.outputs else c for c in columns)
