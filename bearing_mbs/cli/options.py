@@ -8,6 +8,7 @@ import signal
 from pathlib import Path
 
 from bearing_mbs.core.result import FAILED, INTERRUPTED, SUCCESS, SUSPECT
+from bearing_mbs.core.status import worst_status
 from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
@@ -39,14 +40,12 @@ def names(text: str) -> tuple[str, ...]:
 #: number (130 for SIGINT, 143 for SIGTERM), as a shell reports a process stopped by that signal.
 EXIT_CODES = {SUCCESS: 0, FAILED: 1, SUSPECT: 3}
 BAD_INPUT = 2
-#: The order in which statuses dominate a command's exit code: the worst one counts.
-_SEVERITY = (SUCCESS, SUSPECT, FAILED, INTERRUPTED)
 
 
 def exit_code(statuses, signal_number: int | None = None) -> int:
-    """The exit code of a command whose runs ended with ``statuses`` (one status, or several)."""
-    statuses = [statuses] if isinstance(statuses, str) else list(statuses)
-    worst = max(statuses, key=_SEVERITY.index, default=SUCCESS)
+    """The exit code of a command whose runs ended with ``statuses`` (one status, or several: the worst counts,
+    :func:`bearing_mbs.core.status.worst_status`)."""
+    worst = worst_status([statuses] if isinstance(statuses, str) else statuses)
     if worst == INTERRUPTED or signal_number is not None:
         return 128 + (signal_number or signal.SIGINT)
     return EXIT_CODES[worst]

@@ -39,3 +39,15 @@ def failed_check_names(checks: Iterable[Check | dict]) -> list[str]:
     """The names of the checks that failed (from :class:`Check` objects or their dicts)."""
     checks = [c if isinstance(c, Check) else Check.from_dict(c) for c in checks]
     return [check.name for check in checks if not check.passed]
+
+
+def status_note(summary: dict) -> str | None:
+    """What a figure drawn from ``summary`` (with ``status``, ``checks`` and ``message``) must say about it, as
+    :attr:`bearing_mbs.core.result.Result.status_note` says of a run: None for ``success``; else the status with the
+    failed checks, or why the solver stopped."""
+    status = summary["status"]
+    if status == SUCCESS:
+        return None
+    if status == SUSPECT:
+        return f"{status}: failed checks: {', '.join(failed_check_names(summary.get('checks', ())))}"
+    return f"{status}: {summary.get('message', '')}"

@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.core.checks import Check, equilibrium_residual, lower_bound, upper_bound
-from bearing_mbs.core.status import status_entries
+from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models.cylindrical_roller.build import group_law
 from bearing_mbs.models.cylindrical_roller.drivetrain import RPM, steady_speed
@@ -159,8 +159,8 @@ def stiffness_checks(spec: Spec, solution) -> list[Check]:
                     "less clearance (bearing.diametral_clearance <= 0 loads half the rollers) or a larger load.radial"),
         upper_bound("static_load_ratio", load / rating, MAX_STATIC_LOAD_RATIO, "-",
                     f"the load is {load / rating:.3g} times the bearing's static load rating C0 = {rating:.4g} N (ISO "
-                    "76): the most loaded contact exceeds 4000 MPa and the raceways yield, which the elastic law leaves "
-                    f"out. Likely fix: load.radial <= {largest_load:.4g} N"),
+                    "76): the most loaded contact exceeds 4000 MPa and the raceways yield, which the elastic law "
+                    f"leaves out. Likely fix: load.radial <= {largest_load:.4g} N"),
     ]
 
 
@@ -186,5 +186,6 @@ def write_stiffness(spec: Spec, directory: str | Path, figures: bool = True) -> 
     if figures:
         speed = f", {summary['shaft_speed_rpm']:.4g} rpm" if solution.shaft_speed else ""
         plot_load_distribution(solution, directory / FIGURE_FILE,
-                               title=f"{spec.scenario.name}: F = {np.hypot(*solution.load):.4g} N{speed}")
+                               title=f"{spec.scenario.name}: F = {np.hypot(*solution.load):.4g} N{speed}",
+                               note=status_note(summary))
     return summary

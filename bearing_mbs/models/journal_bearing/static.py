@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.core.status import status_entries
+from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.network import network_recess_pressures
@@ -131,12 +131,13 @@ def write_journal(spec: JournalSpec, directory: str | Path, figures: bool = True
         return summary
     write_json(directory / SUMMARY_FILE, summary)
     if figures:
-        _plot_pressure(spec, film, directory / "pressure_map.png")
-        _plot_curve(spec, curve, directory / "load_curve.png")
+        note = status_note(summary)
+        _plot_pressure(spec, film, directory / "pressure_map.png", note)
+        _plot_curve(spec, curve, directory / "load_curve.png", note)
     return summary
 
 
-def _plot_pressure(spec, film, path):
+def _plot_pressure(spec, film, path, note=None):
     figure, axis = new_figure(figsize=(8, 4))
     grid = film.grid
     image = axis.pcolormesh(np.degrees(grid.theta), grid.z * 1e3, film.load_pressure.T / 1e6, shading="nearest",
@@ -146,10 +147,10 @@ def _plot_pressure(spec, film, path):
     axis.set_ylabel("z [mm]")
     axis.set_title(f"{spec.scenario.name}: ε = {spec.journal.eccentricity_ratio:g}, "
                    f"{spec.journal.speed_rpm:g} rpm, {film.cavitation}")
-    return save_figure(figure, path)
+    return save_figure(figure, path, status_note=note)
 
 
-def _plot_curve(spec, curve, path):
+def _plot_curve(spec, curve, path, note=None):
     eps, load, stiffness = np.array(curve).T
     figure, (loads, stiff) = new_figure(2, 1, figsize=(7, 6), sharex=True)
     loads.plot(eps, load, "o-")
@@ -161,4 +162,4 @@ def _plot_curve(spec, curve, path):
         axis.grid(True, alpha=0.3)
     loads.set_title(f"{spec.scenario.name}: C = {spec.journal.radial_clearance * 1e6:g} µm, "
                     f"{spec.journal.speed_rpm:g} rpm")
-    return save_figure(figure, path)
+    return save_figure(figure, path, status_note=note)

@@ -19,7 +19,7 @@ import numpy as np
 
 from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_contact
 from bearing_mbs.core.checks import Check, equilibrium_residual, lower_bound, upper_bound
-from bearing_mbs.core.status import status_entries
+from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings
@@ -157,13 +157,15 @@ def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True
     summary, states = slewing_summary(spec)
     write_json(directory / SUMMARY_FILE, summary)
     if figures and states:
-        _plot_around_the_ring(spec, states[-1], directory / "ball_loads.png")
+        note = status_note(summary)
+        _plot_around_the_ring(spec, states[-1], directory / "ball_loads.png", note)
         if spec.load.axial_displacements:
-            _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png", summary.get("rigid_axial_curve"))
+            _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png", summary.get("rigid_axial_curve"),
+                        note)
     return summary
 
 
-def _plot_around_the_ring(spec, state, path):
+def _plot_around_the_ring(spec, state, path, note=None):
     figure, (loads, angles) = new_figure(2, 1, figsize=(7, 6), sharex=True)
     azimuth = np.degrees(state.azimuths)
     for d, label in enumerate(("diagonal 1", "diagonal 2")):
@@ -175,10 +177,10 @@ def _plot_around_the_ring(spec, state, path):
     angles.set_xlabel("azimuth ψ [deg] (0 along +x)")
     loads.legend()
     loads.set_title(f"{spec.scenario.name}: {state.ball_loads.shape[0]} balls, {spec.slewing.rings} rings")
-    return save_figure(figure, path)
+    return save_figure(figure, path, status_note=note)
 
 
-def _plot_curve(spec, curve, path, rigid_curve=None):
+def _plot_curve(spec, curve, path, rigid_curve=None, note=None):
     displacement, force = np.array(curve).T
     figure, axis = new_figure(figsize=(7, 5))
     axis.plot(displacement * 1e3, force / 1e3, "o-", label=f"{spec.slewing.rings} rings (this model)")
@@ -195,4 +197,4 @@ def _plot_curve(spec, curve, path, rigid_curve=None):
     axis.legend()
     axis.set_title(f"{spec.scenario.name}: D_pw = {spec.slewing.pitch_diameter:g} m, α₀ = "
                    f"{math.degrees(spec.contact_angle_rad):g}°")
-    return save_figure(figure, path)
+    return save_figure(figure, path, status_note=note)

@@ -16,8 +16,10 @@ from bearing_mbs.models.cylindrical_roller.quasistatic.planar import RadialSolut
 from bearing_mbs.models.cylindrical_roller.quasistatic.sliced import SlicedSolution
 
 
-def plot_load_distribution(solution: RadialSolution | SlicedSolution, path: str | Path, *, title: str = "") -> Path:
-    """Draw inner and outer roller loads [N] against azimuth [deg] and save a PNG; returns the path.
+def plot_load_distribution(solution: RadialSolution | SlicedSolution, path: str | Path, *, title: str = "",
+                           note: str | None = None) -> Path:
+    """Draw inner and outer roller loads [N] against azimuth [deg] and save a PNG; returns the path. ``note``: the
+    status of a solution that is not ``success``, stamped on the figure.
 
     Azimuths are wrapped to (−180°, 180°]; dashed lines mark the continuous loaded zone ±ψ_l around the
     displacement direction when the solution provides it (planar model).
@@ -43,4 +45,4 @@ def plot_load_distribution(solution: RadialSolution | SlicedSolution, path: str 
     axis.set_title(title or f"load distribution: Z = {solution.rollers.rollers}, F = ({fx:.4g}, {fy:.4g}) N")
     axis.grid(True, alpha=0.3)
     axis.legend()
-    return save_figure(figure, path, dpi=120)
+    return save_figure(figure, path, dpi=120, status_note=note)
