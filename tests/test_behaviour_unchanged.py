@@ -26,8 +26,8 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent / "behaviour"))
-import compare  # noqa: E402
-import record  # noqa: E402
+import compare
+import record
 
 #: run -> scenario key whose next float up is the rounding-level probe: the runs whose rounding differences grow
 #: (case 3 on the dead zone's edge, case 5 through its constraint's projection, the start-up through stick-slip).
