@@ -9,7 +9,7 @@ float is therefore held to a tolerance on the physical scale of its kind in that
 
 * ``unit`` is the quantity's unit: a summary names it in its ``units`` map (``"angle_deg: deg, load_N: N"`` for
   the fields of a list of records), each check in its ``unit`` field, a result array's column in
-  :data:`ARRAY_UNITS`. A float without a unit is an error: it cannot be compared physically.
+  :func:`column_units`. A float without a unit is an error: it cannot be compared physically.
 * ``scale(unit)`` is the largest magnitude of that unit in the recorded run, summary and arrays together (the
   bearing's size for positions, the load or the largest contact force for forces, the end time for times), at
   least its floor (:data:`NATURAL_SCALES`: 1 for a ratio, a turn for an angle; a force at least the run's energy
@@ -18,13 +18,14 @@ float is therefore held to a tolerance on the physical scale of its kind in that
   the last one: one unit in it is allowed on top.
 
 Exact, because the arithmetic is reproducible by construction (integers, text, structure, no floating point):
-the key sets, text (status, message, names, verdicts), array shapes, which values are NaN or null (the events that
-never happened, the angles no roller visited), and the counts of a run that takes no decision on a computed value
-(a fixed-step explicit method: its steps and force evaluations follow from the end time and the step by integer
-arithmetic; the scene's counts; the exit code). The counts of a run that does decide on computed values (Newton's
+the key sets, text (status, message, names, verdicts), array shapes, and the counts of a run that takes no decision
+on a computed value (a fixed-step explicit method: its steps and force evaluations follow from the end time and the
+step by integer arithmetic; the scene's counts; the exit code). The counts of a run that does decide on computed values (Newton's
 convergence test, a step-size controller, an iterative static solve: :data:`ADAPTIVE_COUNTS`) may move by one
 decision when rounding puts a test value within rounding of its threshold, so they are held to
-:data:`ADAPTIVE_COUNT_RTOL`.
+:data:`ADAPTIVE_COUNT_RTOL`. Which values are NaN or null (events that never happened, angles no roller visited) is
+exact too: a physical outcome that rounding could flip only for a pair grazing within rounding of contact (none in
+the recorded windows).
 """
 
 from __future__ import annotations
