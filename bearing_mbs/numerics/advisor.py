@@ -214,6 +214,12 @@ class StepAdvice:
         return {"field": self.field, "current": self.current, "value": self.value, "limit": self.limit,
                 "set_by": self.mode}
 
+    @property
+    def units(self) -> str:
+        """The units of :meth:`to_dict`'s numbers, as a summary's ``units`` map writes a record's fields."""
+        setting = "-" if self.tolerance else "s"
+        return f"current: {setting}, value: {setting}, limit: s"
+
 
 def step_advice(scene: Scene, solver) -> StepAdvice:
     """The step advice for running ``scene`` with ``solver`` (:class:`StepAdvice`): within the advisor's

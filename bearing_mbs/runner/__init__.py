@@ -126,13 +126,14 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
         "force_evaluations": result.stats.force_evaluations,
         "newton_iterations": result.stats.newton_iterations,
         "scene": scene_counts(scene),
-        "step_advice": step_advice(scene, spec.solver).to_dict(),
     }
+    advice = step_advice(scene, spec.solver)
+    summary["step_advice"] = advice.to_dict()
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")
     model = MODELS[spec.scenario.model]
     summary.update(model.metrics(spec, scene, result))
-    units = {**RUN_UNITS, **model.units}
+    units = {**RUN_UNITS, **model.units, "step_advice": advice.units}
     summary["units"] = {key: units[key] for key in summary if key in units}
     return {key: rounded(json_safe(value)) for key, value in summary.items()}
 

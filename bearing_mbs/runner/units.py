@@ -16,5 +16,4 @@ RUN_UNITS = {
     "rejected_steps": "count",
     "force_evaluations": "count",
     "newton_iterations": "count",
-    "step_advice": "s (value, current and limit of a step; a tolerance is -)",
 }
