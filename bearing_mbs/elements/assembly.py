@@ -128,7 +128,7 @@ def _add_nothing(elements, t, q, v, latched, forces, pair_out, power, complete):
     pass
 
 
-@numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
+@numba.njit(cache=True, inline="always")
 def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     """Generalized forces [N, N, N m per body] of the packed kinds ``elements`` (:attr:`PackedScene.elements`),
     written into ``forces``.
@@ -137,6 +137,10 @@ def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     Returns (supplied, dissipated) power [W]. ``complete=False`` (inside integration stages) lets kinds skip
     outputs no force needs. Called from Python (Exudyn's force user function), it takes the kinds alone: numba
     unboxes every array of its arguments on each call, and these are the ones the forces need.
+
+    Inlined, with every kind's compiled function, into the reference engine's one compiled function of the
+    forces (:func:`bearing_mbs.engines.reference.dynamics.accelerations`): a call that passed the kinds' arrays
+    on would count references to each of them on every evaluation.
     """
     forces[:] = 0.0
     power = np.zeros(2)

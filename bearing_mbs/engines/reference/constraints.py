@@ -81,7 +81,7 @@ def times_rows(constraints, rows, x, k):
     return total
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)  # not inlined: one compiled copy of the block elimination serves the three callers
 def _correction(constraints, inverse_mass, rows, system, right_hand_side):
     """Factor the system of the mass and G, and solve it for the multipliers λ of (G M⁻¹ Gᵀ) λ = r and the
     correction M⁻¹ Gᵀ λ that changes G·x by r (``right_hand_side``): into ``system.right_hand_side``, the
