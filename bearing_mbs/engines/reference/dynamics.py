@@ -9,8 +9,9 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from bearing_mbs.elements import scene_forces
+from bearing_mbs.elements import element_forces
 from bearing_mbs.engines.reference.constraints import add_constraint_accelerations
+from bearing_mbs.engines.reference.copies import copy_into
 
 #: The values of :func:`accelerations`' flags for compiled callers: numpy booleans, which numba types as plain
 #: booleans, where it would compile a separate copy of the function for each literal ``True`` or ``False``.
@@ -33,10 +34,10 @@ def accelerations(packed, t, q, v, latched, a, workspace, complete, constrained)
     :mod:`bearing_mbs.engines.reference.integrators`).
     """
     forces = workspace.forces
-    supplied, dissipated = scene_forces(packed, t, q, v, latched, forces, workspace.pair_out, complete)
+    supplied, dissipated = element_forces(packed.elements, t, q, v, latched, forces, workspace.pair_out, complete)
     for i in range(q.size):
         a[i] = packed.inverse_mass[i] * forces[i] + packed.gravity[i]
     if constrained and packed.constraints.kind.size > 0:
-        workspace.constraint_forces[:] = add_constraint_accelerations(packed.constraints, packed.inverse_mass, q, v,
-                                                                      a, workspace.constraint_system)
+        copy_into(workspace.constraint_forces, add_constraint_accelerations(packed.constraints, packed.inverse_mass, q,
+                                                                            v, a, workspace.constraint_system))
     return supplied, dissipated

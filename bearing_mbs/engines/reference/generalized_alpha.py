@@ -69,6 +69,7 @@ from bearing_mbs.engines.reference.codes import (
     STEP_UNDERFLOW,
 )
 from bearing_mbs.engines.reference.constraints import constraint_rows, times_rows
+from bearing_mbs.engines.reference.copies import copy_into
 from bearing_mbs.engines.reference.dynamics import (
     COMPLETE,
     CONSTRAINED,
@@ -113,7 +114,7 @@ def form_newton_matrix(packed, analytic, t, q, v, latched, slope_q, slope_v, wor
         base, shifted = carry.base, workspace.forces
         accelerations(packed, t, q, v, latched, workspace.acceleration, workspace, PARTIAL, UNCONSTRAINED)
         counters[EVALUATIONS] += 1
-        base[:] = shifted
+        copy_into(base, shifted)
         for j in range(2 * n):
             column = j % n
             x = q if j < n else v
@@ -147,7 +148,7 @@ def newton_increment(packed, carry, residual, constraint_residual):
     for k in range(constraint_residual.size):
         right_hand_side[n + k] = -constraint_residual[k]
     solve(system)
-    carry.increment[:] = right_hand_side[:n]
+    copy_into(carry.increment, right_hand_side[:n])
     for k in range(constraint_residual.size):
         carry.multiplier[k] += right_hand_side[n + k]
 
@@ -202,9 +203,9 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
     if not ready:
         power[0], power[1] = accelerations(packed, t, q, v, latched, a_old, workspace, PARTIAL, CONSTRAINED)
         counters[EVALUATIONS] += 1
-        accepted_multiplier[:] = workspace.constraint_system.right_hand_side[n:]  # its λ (constraints.py)
+        copy_into(accepted_multiplier, workspace.constraint_system.right_hand_side[n:])  # its λ (constraints.py)
         if carry.started[0] == 0:  # ã_0 = a_0
-            auxiliary[:] = a_old
+            copy_into(auxiliary, a_old)
             carry.started[0] = 1
     alpha_m, alpha_f, gamma, beta = coefficients(controls.spectral_radius)
     share = (1.0 - alpha_f) / (1.0 - alpha_m)  # ∂ã_{n+1}/∂a
@@ -215,7 +216,7 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         workspace.stage_q[i] = q[i] + h * v[i] + h * h * ((0.5 - beta) * auxiliary[i] + beta * fixed_auxiliary)
         workspace.stage_v[i] = v[i] + h * ((1.0 - gamma) * auxiliary[i] + gamma * fixed_auxiliary)
         a[i] = a_old[i]  # the predictor
-    multiplier[:] = accepted_multiplier
+    copy_into(multiplier, accepted_multiplier)
     supplied = dissipated = 0.0
     formed, converged = 0, False
     form = not 1.0 / REUSE_RATIO <= h / carry.matrix_step[0] <= REUSE_RATIO  # J of another step: form it
@@ -251,8 +252,8 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         if converged or formed == JACOBIANS_PER_STEP:
             break
         if not math.isfinite(size):
-            a[:] = a_old  # back to the predictor
-            multiplier[:] = accepted_multiplier
+            copy_into(a, a_old)  # back to the predictor
+            copy_into(multiplier, accepted_multiplier)
         form = True
     # the state of the converged a, its last increment included
     _state_of(a, workspace.stage_q, workspace.stage_v, slope_q, slope_v, q_new, v_new)
@@ -281,6 +282,6 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
     for i in range(n):
         auxiliary[i] = ((1.0 - alpha_f) * a[i] + alpha_f * a_old[i] - alpha_m * auxiliary[i]) / (1.0 - alpha_m)
         a_old[i] = a[i]
-    accepted_multiplier[:] = multiplier
+    copy_into(accepted_multiplier, multiplier)
     power[0], power[1] = supplied, dissipated
     return RUNNING, True, h_adaptive, work_supplied, work_dissipated

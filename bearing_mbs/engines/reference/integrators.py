@@ -1,12 +1,26 @@
 r"""The driver of the compiled reference engine: from output instant to output instant with any method.
 
 :func:`integrate` chooses each step (equal steps per output interval for the fixed-step methods, the adaptive
-step for ``dopri5`` and generalized-α, all landing exactly on the output instants), calls the method's step
-function (:mod:`~bearing_mbs.engines.reference.central_difference`,
+step for ``dopri5`` and generalized-α, all landing exactly on the output instants), takes it with the method's
+functions (:mod:`~bearing_mbs.engines.reference.central_difference`,
 :mod:`~bearing_mbs.engines.reference.velocity_verlet`, :mod:`~bearing_mbs.engines.reference.runge_kutta`,
 :mod:`~bearing_mbs.engines.reference.generalized_alpha`), projects the candidate state onto the constraints,
 applies the run guards (non-finite state, speed limit, penetration), accepts the step, updates the pairs' state once
 per accepted step, and stores the decimated output.
+
+How it is laid out for numba (what the first run compiles and what a step costs, docs/engines.md "Compilation"):
+
+* the forces are compiled once per driver, in :func:`~bearing_mbs.engines.reference.dynamics.accelerations`, a
+  function of its own that every method and the Python side call;
+* a compiled function that is inlined (``inline="always"``) takes arrays and numbers, not bundles: inlining copies
+  each argument, and a copied bundle that lives across a call to a compiled function costs a reference count of
+  every array in it per call (about 1 µs for a bearing's hundred arrays, measured). So the explicit methods'
+  evaluations are called here, with this function's own arguments, between the array updates the method modules
+  inline; the Runge–Kutta stages and generalized-α's step are compiled functions that receive the bundles as
+  arguments;
+* a call passes a flag a compiled function branches on as a plain boolean (``bool(ready)``, or the numpy booleans
+  of :mod:`~bearing_mbs.engines.reference.dynamics`): numba compiles a separate copy of a function for each literal
+  ``True`` or ``False`` it receives.
 """
 
 from __future__ import annotations
@@ -34,6 +48,7 @@ from bearing_mbs.engines.reference.codes import (
     VELOCITY_VERLET,
 )
 from bearing_mbs.engines.reference.constraints import length_scale, project_positions, project_velocities
+from bearing_mbs.engines.reference.copies import copy_into
 from bearing_mbs.engines.reference.dynamics import COMPLETE, CONSTRAINED, PARTIAL, accelerations
 from bearing_mbs.engines.reference.generalized_alpha import generalized_alpha_step
 from bearing_mbs.engines.reference.runge_kutta import reuse_last_stage, runge_kutta_acceptance, runge_kutta_stages
@@ -63,12 +78,12 @@ def check_state(q, v, speed_limit):
 def record_output(packed, index, t, state, workspace, output):
     """Store the state at output instant ``index``, with the pairs' complete outputs and the constraint forces."""
     output.t[index] = t
-    output.q[index] = state.q
-    output.v[index] = state.v
+    copy_into(output.q[index], state.q)
+    copy_into(output.v[index], state.v)
     accelerations(packed, t, state.q, state.v, state.latched, workspace.acceleration, workspace, COMPLETE, CONSTRAINED)
-    output.pairs[index] = workspace.pair_out
-    output.work[index] = state.work
-    output.constraints[index] = workspace.constraint_forces
+    copy_into(output.pairs[index], workspace.pair_out)
+    copy_into(output.work[index], state.work)
+    copy_into(output.constraints[index], workspace.constraint_forces)
 
 
 @numba.njit(cache=True)
@@ -176,8 +191,8 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
             status, culprit = check_state(q_new, v_new, controls.speed_limit)
             if status != RUNNING:
                 break
-            q[:] = q_new
-            v[:] = v_new
+            copy_into(q, q_new)
+            copy_into(v, v_new)
             state.work[0] += work_supplied
             state.work[1] += work_dissipated
             if stepping:

@@ -16,6 +16,7 @@ import math
 import numba
 
 from bearing_mbs.engines.reference.codes import EVALUATIONS, REJECTED, RUNNING, STEP_UNDERFLOW
+from bearing_mbs.engines.reference.copies import copy_into
 from bearing_mbs.engines.reference.dynamics import CONSTRAINED, PARTIAL, accelerations
 
 
@@ -101,6 +102,6 @@ def runge_kutta_acceptance(tableau, controls, t, h, landing, h_adaptive, q, v, q
 def reuse_last_stage(stages):
     """FSAL: the last stage, F at the accepted state, becomes the next step's first stage."""
     last = stages.power.shape[0] - 1
-    stages.velocity[0, :] = stages.velocity[last]
-    stages.acceleration[0, :] = stages.acceleration[last]
-    stages.power[0, :] = stages.power[last]
+    copy_into(stages.velocity[0], stages.velocity[last])
+    copy_into(stages.acceleration[0], stages.acceleration[last])
+    copy_into(stages.power[0], stages.power[last])
