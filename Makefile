@@ -3,6 +3,8 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+# pytest-xdist workers of `make test` and `make test-slow` (two cores: two workers; a single file run by hand is serial).
+WORKERS ?= 2
 
 .PHONY: demo test test-slow bench static-check skidding skidding-map cage-models clean
 
@@ -15,11 +17,13 @@ $(STAMP): pyproject.toml
 demo: $(STAMP)
 	$(BIN)/bearing-mbs run scenarios/seed_hss_startup.toml --out out/demo --overwrite
 
+# With workers, tests/conftest.py first compiles the engines' kernels once, in two processes (tests/warm_cache.py), and a
+# test module's tests stay on one worker (its module-scoped fixtures run once).
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n $(WORKERS) --dist loadscope
 
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -q -m slow
+	$(BIN)/python -m pytest -q -m slow -n $(WORKERS) --dist loadscope
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py

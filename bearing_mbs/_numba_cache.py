@@ -22,6 +22,13 @@ STAMP = PACKAGE / "__pycache__" / "numba_sources.sha256"
 COMPILED_SOURCES = ("contact/*.py", "core/*.py", "elements/*.py", "engines/reference/*.py", "fluid_film/*.py")
 
 
+def isolated_cache_dir(name: str) -> Path:
+    """A numba cache directory of its own (for ``NUMBA_CACHE_DIR``), for code compiled on types from outside the
+    package (a test's force element): the package's cache, which a process that cannot import those types reads
+    (a Dask worker), stays free of them, and :func:`invalidate_if_stale` clears this one with it."""
+    return PACKAGE / "__pycache__" / "isolated" / name
+
+
 def sources_digest() -> str:
     digest = hashlib.sha256()
     for path in sorted(p for pattern in COMPILED_SOURCES for p in PACKAGE.glob(pattern)):

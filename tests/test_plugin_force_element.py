@@ -3,11 +3,13 @@ edit to any engine: the checks are in ``tests/isolated_force_element.py`` (refer
 
 They run in a child pytest process with a numba cache directory of its own, so that compiled functions
 specialised on the test's own types never enter the package's shared on-disk cache (a Dask worker, which cannot
-import the test module, would fail to read such an entry back).
+import the test module, would fail to read such an entry back). That directory is kept between runs, one per
+version of the checks' file, and cleared with the package's cache when a compiled source changes.
 """
 
 from __future__ import annotations
 
+import hashlib
 import os
 import re
 import subprocess
@@ -16,26 +18,29 @@ from pathlib import Path
 
 import pytest
 
+from bearing_mbs._numba_cache import isolated_cache_dir
+
 CHECKS = Path(__file__).with_name("isolated_force_element.py")
 
 
-def checks(tmp_path, *arguments) -> str:
+def checks(*arguments) -> str:
     """Run the checks in a child pytest with a numba cache of its own; return its output."""
-    environment = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "numba")}
+    version = hashlib.sha256(CHECKS.read_bytes()).hexdigest()[:16]
+    environment = {**os.environ, "NUMBA_CACHE_DIR": str(isolated_cache_dir(f"force-element-{version}"))}
     run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", *arguments, str(CHECKS)],
                          env=environment, capture_output=True, text=True, cwd=CHECKS.parent)
     assert run.returncode == 0, run.stdout[-3000:]
     return run.stdout
 
 
-def test_a_spring_registered_from_outside_runs_on_both_engines(tmp_path):
-    output = checks(tmp_path)
+def test_a_spring_registered_from_outside_runs_on_both_engines():
+    output = checks()
     assert re.search(r"\b6 passed", output), output[-3000:]
 
 
 @pytest.mark.slow
-def test_a_spring_registered_from_outside_runs_on_both_implicit_solvers(tmp_path):
+def test_a_spring_registered_from_outside_runs_on_both_implicit_solvers():
     """Without an analytic Jacobian: the reference engine's generalized-α differentiates numerically, and Exudyn
     falls back to its own numerical Jacobian."""
-    output = checks(tmp_path, "-m", "slow")
+    output = checks("-m", "slow")
     assert re.search(r"\b2 passed", output), output[-3000:]

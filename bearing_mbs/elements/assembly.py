@@ -1,8 +1,8 @@
 """A scene as arrays, and the evaluation of all its forces by looping over the registered force elements.
 
 :func:`pack_scene` packs the contact pairs and every registered force-element kind (registry order) into
-:class:`PackedScene`. :func:`scene_forces` (compiled) and :func:`scene_forces_twin` (numpy) add the forces
-of every kind; in compiled code each kind's parameters have their own type: the built-in kinds are called one by
+:class:`PackedScene`. :func:`element_forces` (compiled; :func:`scene_forces` calls it with a packed scene) and
+:func:`scene_forces_twin` (numpy) add the forces of every kind; in compiled code each kind's parameters have their own type: the built-in kinds are called one by
 one, and numba resolves, inlines and orders the calls to any kind registered from outside when it types the
 scene's tuple of kinds. Gravity and constraint forces are the engines' business.
 """
@@ -128,7 +128,7 @@ def _add_nothing(elements, t, q, v, latched, forces, pair_out, power, complete):
     pass
 
 
-@numba.njit(cache=True, inline="always")  # inlined into the integrators: no per-call reference counting
+@numba.njit(cache=True, inline="always")
 def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     """Generalized forces [N, N, N m per body] of the packed kinds ``elements`` (:attr:`PackedScene.elements`),
     written into ``forces``.
@@ -137,6 +137,10 @@ def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     Returns (supplied, dissipated) power [W]. ``complete=False`` (inside integration stages) lets kinds skip
     outputs no force needs. Called from Python (Exudyn's force user function), it takes the kinds alone: numba
     unboxes every array of its arguments on each call, and these are the ones the forces need.
+
+    Inlined, with every kind's compiled function, into the reference engine's one compiled function of the
+    forces (:func:`bearing_mbs.engines.reference.dynamics.accelerations`): a call that passed the kinds' arrays
+    on would count references to each of them on every evaluation.
     """
     forces[:] = 0.0
     power = np.zeros(2)
@@ -145,10 +149,10 @@ def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     return power[0], power[1]
 
 
-@numba.njit(cache=True, inline="always")
 def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
-    """:func:`element_forces` of a packed scene."""
-    return element_forces(packed.elements, t, q, v, latched, forces, pair_out, complete)
+    """:func:`element_forces` of a packed scene, from Python: it calls the compiled function Exudyn's connectors call
+    (one compiled copy for every caller in Python, ``complete`` always given)."""
+    return element_forces(packed.elements, t, q, v, latched, forces, pair_out, bool(complete))
 
 
 def has_analytic_jacobian(scene: Scene) -> bool:

@@ -85,7 +85,7 @@ def _add_film_partials(pairs, k, gap, gap_rate, slip, rolling, poiseuille, d_fn,
     d_moment[0] -= rb * poiseuille * share_gap
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
     r"""∂F/∂q and ∂F/∂v of the pairs in contact (and of those with a film), by the chain rule: the laws' partial
     derivatives in the pair's gap, gap rate, slip, rolling speed and spin (:func:`_law_partials`,

@@ -138,7 +138,7 @@ def add_forces_twin(films, t, q, v, latched, forces, pair_out, power, complete):
         power[1] -= load @ v[3 * body : 3 * body + 3]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
     """∂F/∂q and ∂F/∂v of each film: its force's slopes in (e_x, e_y, v_x, v_y, Ω)
     (:func:`~bearing_mbs.fluid_film.closed_forms.short_bearing_force_jacobian`,

@@ -33,7 +33,7 @@ def add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, com
     unbalances.add_forces(elements[6], t, q, v, latched, forces, pair_out, power, complete)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def add_built_in_jacobians(elements, t, q, v, latched, pair_out, force_position, force_velocity):
     """The analytic Jacobians of the built-in kinds, ``elements[0:7]`` in the order of :data:`BUILT_IN`
     (``ForceElement.add_jacobian``)."""

@@ -182,7 +182,7 @@ def potential_energy(joints, position, pair_output):
     return energy
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
     r"""With the body's force :math:`-(f + \beta K_t \dot x)`, f = Σ Bᵀ Q ŝ and :math:`K_t = \partial f/\partial x`:
     ∂F/∂v = −β K_t and ∂F/∂q = −K_t − β ∂(K_t ẋ)/∂x. Per diagonal the Hessian of its potential is

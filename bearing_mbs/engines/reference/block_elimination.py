@@ -229,7 +229,7 @@ def _invert(values, start, size, pivot):
                 values[a], values[b] = values[b], values[a]
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def factor(system):
     """Block LU in place: each diagonal block becomes its (Schur-updated) inverse D⁻¹, each block (i, p) below it
     L_ip = A_ip D⁻¹; the blocks (p, j) above stay."""
@@ -261,7 +261,7 @@ def factor(system):
                                 values[target + r * columns + c] -= values[below + r * size + m] * entry
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def solve(system):
     """Solve the factored system for ``system.right_hand_side``, in place (the unknowns replace it)."""
     start, values, y = system.member_start, system.values, system.permuted

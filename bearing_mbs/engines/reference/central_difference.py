@@ -14,9 +14,6 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from bearing_mbs.engines.reference.codes import EVALUATIONS
-from bearing_mbs.engines.reference.dynamics import accelerations
-
 
 @numba.njit(cache=True, inline="always")
 def central_difference_step_size(controls, latched):
@@ -29,15 +26,12 @@ def central_difference_step_size(controls, latched):
 
 
 @numba.njit(cache=True, inline="always")
-def central_difference_step(packed, t, h, state, workspace, counters):
-    """Positions at t + h into ``workspace.q_new``; returns the step's (supplied, dissipated) work [J].
-    The velocity follows after the constraint projection (:func:`central_difference_velocity`)."""
-    q, v, a, q_new = state.q, state.v, workspace.acceleration, workspace.q_new
-    supplied, dissipated = accelerations(packed, t, q, v, state.latched, a, workspace)
-    counters[EVALUATIONS] += 1
+def central_difference_positions(q, v, a, h, q_new):
+    """Positions at t + h into ``q_new``, from the acceleration a at (q, v) (the driver evaluates it and integrates
+    the work, h times the power at (q, v)). The velocity follows after the constraint projection
+    (:func:`central_difference_velocity`)."""
     for i in range(q.size):
         q_new[i] = q[i] + h * v[i] + h * h * a[i]
-    return h * supplied, h * dissipated
 
 
 @numba.njit(cache=True, inline="always")

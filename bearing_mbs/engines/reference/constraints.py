@@ -32,6 +32,7 @@ import numpy as np
 
 from bearing_mbs.contact import kinematics
 from bearing_mbs.engines.reference.block_elimination import assemble_constraints, factor, solve
+from bearing_mbs.engines.reference.copies import copy_into
 
 PROJECTION_TOLERANCE = 1e-14
 MAX_PROJECTION_ITERATIONS = 20
@@ -81,7 +82,7 @@ def times_rows(constraints, rows, x, k):
     return total
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)  # not inlined: one compiled copy of the block elimination serves the three callers
 def _correction(constraints, inverse_mass, rows, system, right_hand_side):
     """Factor the system of the mass and G, and solve it for the multipliers λ of (G M⁻¹ Gᵀ) λ = r and the
     correction M⁻¹ Gᵀ λ that changes G·x by r (``right_hand_side``): into ``system.right_hand_side``, the
@@ -90,7 +91,7 @@ def _correction(constraints, inverse_mass, rows, system, right_hand_side):
     factor(system)
     n = inverse_mass.size
     system.right_hand_side[:n] = 0.0
-    system.right_hand_side[n:] = right_hand_side
+    copy_into(system.right_hand_side[n:], right_hand_side)
     solve(system)
     return system.right_hand_side[:n], system.right_hand_side[n:]
 
@@ -107,7 +108,8 @@ def add_constraint_accelerations(constraints, inverse_mass, q, v, a, system):
     for k in range(c):
         gamma[k] -= times_rows(constraints, rows, a, k)
     correction, multipliers = _correction(constraints, inverse_mass, rows, system, gamma)
-    a += correction
+    for i in range(a.size):
+        a[i] += correction[i]
     forces = np.empty(c)
     for k in range(c):
         forces[k] = abs(multipliers[k]) * np.hypot(rows[k, 3], rows[k, 4])
@@ -134,7 +136,9 @@ def project_positions(constraints, inverse_mass, q, scale, system):
         constraint_rows(constraints, q, q, residual, rows, gamma)
         if np.max(np.abs(residual)) <= PROJECTION_TOLERANCE * scale:
             break
-        q -= _correction(constraints, inverse_mass, rows, system, residual)[0]
+        correction = _correction(constraints, inverse_mass, rows, system, residual)[0]
+        for i in range(q.size):
+            q[i] -= correction[i]
     return np.max(np.abs(residual))
 
 
@@ -147,4 +151,6 @@ def project_velocities(constraints, inverse_mass, q, v, system):
     constraint_rows(constraints, q, v, residual, rows, gamma)
     for k in range(c):
         gamma[k] = times_rows(constraints, rows, v, k)
-    v -= _correction(constraints, inverse_mass, rows, system, gamma)[0]
+    correction = _correction(constraints, inverse_mass, rows, system, gamma)[0]
+    for i in range(v.size):
+        v[i] -= correction[i]

@@ -111,7 +111,7 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
         """The state at t as an output row (initial state, or the state where a run stopped), and its
         acceleration."""
         acceleration, scratch = np.empty(n), new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_system(scene))
-        accelerations(packed, t, q, v, latched, acceleration, scratch, True)
+        accelerations(packed, t, q, v, latched, acceleration, scratch, True, True)
         return t, q.copy(), v.copy(), scratch.pair_out, state.work.copy(), scratch.constraint_forces, acceleration
 
     series = [output.t, output.q, output.v, output.pairs, output.work, output.constraints]

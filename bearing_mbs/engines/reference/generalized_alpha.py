@@ -69,7 +69,14 @@ from bearing_mbs.engines.reference.codes import (
     STEP_UNDERFLOW,
 )
 from bearing_mbs.engines.reference.constraints import constraint_rows, times_rows
-from bearing_mbs.engines.reference.dynamics import accelerations
+from bearing_mbs.engines.reference.copies import copy_into
+from bearing_mbs.engines.reference.dynamics import (
+    COMPLETE,
+    CONSTRAINED,
+    PARTIAL,
+    UNCONSTRAINED,
+    accelerations,
+)
 
 #: Newton stops when every increment is below this fraction of its coordinate's tolerance scale.
 NEWTON_FRACTION = 0.1
@@ -92,13 +99,7 @@ def coefficients(spectral_radius):
     return alpha_m, alpha_f, gamma, 0.25 * (gamma + 0.5) ** 2
 
 
-@numba.njit(cache=True)  # not inlined: one compiled copy of the force kernels serves every call below
-def _evaluate(packed, t, q, v, latched, a, workspace, counters, complete=False, constrained=True):
-    counters[EVALUATIONS] += 1
-    return accelerations(packed, t, q, v, latched, a, workspace, complete, constrained)
-
-
-@numba.njit(cache=True)
+@numba.njit(cache=True, inline="always")
 def form_newton_matrix(packed, analytic, t, q, v, latched, slope_q, slope_v, workspace, carry, counters):
     """Newton's matrix at (t, q, v) (mass less β' ∂F/∂q + γ' ∂F/∂v, bordered by the constraints' G: the module's
     docstring), formed as the sparse system of :mod:`~bearing_mbs.engines.reference.block_elimination` and
@@ -106,19 +107,22 @@ def form_newton_matrix(packed, analytic, t, q, v, latched, slope_q, slope_v, wor
     n = q.size
     stiffness, damping = carry.stiffness, carry.damping
     if analytic:  # the complete pair outputs the Jacobian reads
-        _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, True, False)
+        accelerations(packed, t, q, v, latched, workspace.acceleration, workspace, COMPLETE, UNCONSTRAINED)
+        counters[EVALUATIONS] += 1
         element_jacobian(packed.elements, t, q, v, latched, workspace.pair_out, stiffness, damping)
     else:  # forward differences of the forces: a registered kind without an analytic Jacobian
         base, shifted = carry.base, workspace.forces
-        _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, False, False)
-        base[:] = shifted
+        accelerations(packed, t, q, v, latched, workspace.acceleration, workspace, PARTIAL, UNCONSTRAINED)
+        counters[EVALUATIONS] += 1
+        copy_into(base, shifted)
         for j in range(2 * n):
             column = j % n
             x = q if j < n else v
             saved = x[column]
             delta = DIFFERENCE_STEP * max(1.0, abs(saved))
             x[column] = saved + delta
-            _evaluate(packed, t, q, v, latched, workspace.acceleration, workspace, counters, False, False)
+            accelerations(packed, t, q, v, latched, workspace.acceleration, workspace, PARTIAL, UNCONSTRAINED)
+            counters[EVALUATIONS] += 1
             x[column] = saved
             target = stiffness if j < n else damping
             for i in range(n):
@@ -144,12 +148,12 @@ def newton_increment(packed, carry, residual, constraint_residual):
     for k in range(constraint_residual.size):
         right_hand_side[n + k] = -constraint_residual[k]
     solve(system)
-    carry.increment[:] = right_hand_side[:n]
+    copy_into(carry.increment, right_hand_side[:n])
     for k in range(constraint_residual.size):
         carry.multiplier[k] += right_hand_side[n + k]
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def newton_residual(packed, carry, free, q, v):
     """r = a − M⁻¹(F + Gᵀλ) − g into ``free`` (which holds M⁻¹F + g at (q, v) on entry) and r_λ = G a − γ into
     ``carry.constraint_residual``, for the iterate a = ``carry.unknown``, λ = ``carry.multiplier``."""
@@ -170,21 +174,11 @@ def newton_residual(packed, carry, free, q, v):
 
 
 @numba.njit(cache=True, inline="always")
-def _state_of(workspace, carry, slope_q, slope_v):
-    """q_{n+1}, v_{n+1} of the current iterate a = ``carry.unknown``, into ``workspace.q_new``, ``workspace.v_new``."""
-    for i in range(carry.unknown.size):
-        workspace.q_new[i] = workspace.stage_q[i] + slope_q * carry.unknown[i]
-        workspace.v_new[i] = workspace.stage_v[i] + slope_v * carry.unknown[i]
-
-
-@numba.njit(cache=True, inline="always")
-def _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v):
-    """J at the current iterate (q, v of ``carry.unknown``), for steps of h."""
-    _state_of(workspace, carry, slope_q, slope_v)
-    form_newton_matrix(packed, controls.analytic_jacobian, t + h, workspace.q_new, workspace.v_new, state.latched,
-                       slope_q, slope_v, workspace, carry, counters)
-    carry.matrix_step[0] = h
-    counters[JACOBIANS] += 1
+def _state_of(a, fixed_q, fixed_v, slope_q, slope_v, q, v):
+    """q_{n+1} = fixed_q + slope_q a and v_{n+1} = fixed_v + slope_v a of the iterate a, into q, v."""
+    for i in range(a.size):
+        q[i] = fixed_q[i] + slope_q * a[i]
+        v[i] = fixed_v[i] + slope_v * a[i]
 
 
 @numba.njit(cache=True)
@@ -207,10 +201,11 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
     tolerance = controls.tolerance
     multiplier, accepted_multiplier = carry.multiplier, carry.accepted_multiplier
     if not ready:
-        power[0], power[1] = _evaluate(packed, t, q, v, latched, a_old, workspace, counters)
-        accepted_multiplier[:] = workspace.constraint_system.right_hand_side[n:]  # its λ (constraints.py)
+        power[0], power[1] = accelerations(packed, t, q, v, latched, a_old, workspace, PARTIAL, CONSTRAINED)
+        counters[EVALUATIONS] += 1
+        copy_into(accepted_multiplier, workspace.constraint_system.right_hand_side[n:])  # its λ (constraints.py)
         if carry.started[0] == 0:  # ã_0 = a_0
-            auxiliary[:] = a_old
+            copy_into(auxiliary, a_old)
             carry.started[0] = 1
     alpha_m, alpha_f, gamma, beta = coefficients(controls.spectral_radius)
     share = (1.0 - alpha_f) / (1.0 - alpha_m)  # ∂ã_{n+1}/∂a
@@ -221,19 +216,25 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         workspace.stage_q[i] = q[i] + h * v[i] + h * h * ((0.5 - beta) * auxiliary[i] + beta * fixed_auxiliary)
         workspace.stage_v[i] = v[i] + h * ((1.0 - gamma) * auxiliary[i] + gamma * fixed_auxiliary)
         a[i] = a_old[i]  # the predictor
-    multiplier[:] = accepted_multiplier
+    copy_into(multiplier, accepted_multiplier)
     supplied = dissipated = 0.0
     formed, converged = 0, False
-    if not 1.0 / REUSE_RATIO <= h / carry.matrix_step[0] <= REUSE_RATIO:  # J of another step: form it
-        _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v)
-        formed = 1
+    form = not 1.0 / REUSE_RATIO <= h / carry.matrix_step[0] <= REUSE_RATIO  # J of another step: form it
     while True:
+        if form:  # J at the current iterate, for steps of h
+            _state_of(a, workspace.stage_q, workspace.stage_v, slope_q, slope_v, q_new, v_new)
+            form_newton_matrix(packed, controls.analytic_jacobian, t + h, q_new, v_new, latched, slope_q, slope_v,
+                               workspace, carry, counters)
+            carry.matrix_step[0] = h
+            counters[JACOBIANS] += 1
+            formed += 1
         previous = np.inf
         for _ in range(ITERATIONS_PER_JACOBIAN):
-            _state_of(workspace, carry, slope_q, slope_v)
+            _state_of(a, workspace.stage_q, workspace.stage_v, slope_q, slope_v, q_new, v_new)
             # the constraints' multipliers are Newton's unknowns too: no constraint solve per iteration
-            supplied, dissipated = _evaluate(packed, t + h, q_new, v_new, latched, f, workspace, counters, False,
-                                             False)
+            supplied, dissipated = accelerations(packed, t + h, q_new, v_new, latched, f, workspace, PARTIAL,
+                                                 UNCONSTRAINED)
+            counters[EVALUATIONS] += 1
             newton_residual(packed, carry, f, q_new, v_new)
             newton_increment(packed, carry, f, carry.constraint_residual)
             size = 0.0
@@ -251,11 +252,11 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         if converged or formed == JACOBIANS_PER_STEP:
             break
         if not math.isfinite(size):
-            a[:] = a_old  # back to the predictor
-            multiplier[:] = accepted_multiplier
-        _form_at(packed, controls, t, h, state, carry, workspace, counters, slope_q, slope_v)
-        formed += 1
-    _state_of(workspace, carry, slope_q, slope_v)  # the state of the converged a, its last increment included
+            copy_into(a, a_old)  # back to the predictor
+            copy_into(multiplier, accepted_multiplier)
+        form = True
+    # the state of the converged a, its last increment included
+    _state_of(a, workspace.stage_q, workspace.stage_v, slope_q, slope_v, q_new, v_new)
     if not converged:  # retry at half the step
         counters[REJECTED] += 1
         h_adaptive = 0.5 * h
@@ -281,6 +282,6 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
     for i in range(n):
         auxiliary[i] = ((1.0 - alpha_f) * a[i] + alpha_f * a_old[i] - alpha_m * auxiliary[i]) / (1.0 - alpha_m)
         a_old[i] = a[i]
-    accepted_multiplier[:] = multiplier
+    copy_into(accepted_multiplier, multiplier)
     power[0], power[1] = supplied, dissipated
     return RUNNING, True, h_adaptive, work_supplied, work_dissipated

@@ -1,12 +1,26 @@
 r"""The driver of the compiled reference engine: from output instant to output instant with any method.
 
 :func:`integrate` chooses each step (equal steps per output interval for the fixed-step methods, the adaptive
-step for ``dopri5`` and generalized-α, all landing exactly on the output instants), calls the method's step
-function (:mod:`~bearing_mbs.engines.reference.central_difference`,
+step for ``dopri5`` and generalized-α, all landing exactly on the output instants), takes it with the method's
+functions (:mod:`~bearing_mbs.engines.reference.central_difference`,
 :mod:`~bearing_mbs.engines.reference.velocity_verlet`, :mod:`~bearing_mbs.engines.reference.runge_kutta`,
 :mod:`~bearing_mbs.engines.reference.generalized_alpha`), projects the candidate state onto the constraints,
 applies the run guards (non-finite state, speed limit, penetration), accepts the step, updates the pairs' state once
 per accepted step, and stores the decimated output.
+
+How it is laid out for numba (what the first run compiles and what a step costs, docs/engines.md "Compilation"):
+
+* the forces are compiled once per driver, in :func:`~bearing_mbs.engines.reference.dynamics.accelerations`, a
+  function of its own that every method and the Python side call;
+* a compiled function that is inlined (``inline="always"``) takes arrays and numbers, not bundles: inlining copies
+  each argument, and a copied bundle that lives across a call to a compiled function costs a reference count of
+  every array in it per call (about 1 µs for a bearing's hundred arrays, measured). So the explicit methods'
+  evaluations are called here, with this function's own arguments, between the array updates the method modules
+  inline; the Runge–Kutta stages and generalized-α's step are compiled functions that receive the bundles as
+  arguments;
+* a call passes a flag a compiled function branches on as a plain boolean (``bool(ready)``, or the numpy booleans
+  of :mod:`~bearing_mbs.engines.reference.dynamics`): numba compiles a separate copy of a function for each literal
+  ``True`` or ``False`` it receives.
 """
 
 from __future__ import annotations
@@ -17,13 +31,14 @@ import numba
 
 from bearing_mbs.contact.state import advance_pair_state
 from bearing_mbs.engines.reference.central_difference import (
-    central_difference_step,
+    central_difference_positions,
     central_difference_step_size,
     central_difference_velocity,
 )
 from bearing_mbs.engines.reference.codes import (
     BLOWUP,
     CENTRAL_DIFFERENCE,
+    EVALUATIONS,
     NONFINITE,
     PENETRATION,
     PROJECTION_FAILED,
@@ -33,10 +48,11 @@ from bearing_mbs.engines.reference.codes import (
     VELOCITY_VERLET,
 )
 from bearing_mbs.engines.reference.constraints import length_scale, project_positions, project_velocities
-from bearing_mbs.engines.reference.dynamics import accelerations
+from bearing_mbs.engines.reference.copies import copy_into
+from bearing_mbs.engines.reference.dynamics import COMPLETE, CONSTRAINED, PARTIAL, accelerations
 from bearing_mbs.engines.reference.generalized_alpha import generalized_alpha_step
-from bearing_mbs.engines.reference.runge_kutta import reuse_last_stage, runge_kutta_step
-from bearing_mbs.engines.reference.velocity_verlet import velocity_verlet_step
+from bearing_mbs.engines.reference.runge_kutta import reuse_last_stage, runge_kutta_acceptance, runge_kutta_stages
+from bearing_mbs.engines.reference.velocity_verlet import velocity_verlet_drift, velocity_verlet_kick
 
 #: How far beyond the step an output instant may be and still be landed on in that step (not a sliver after it).
 LANDING_SLACK = 1e-9
@@ -62,12 +78,12 @@ def check_state(q, v, speed_limit):
 def record_output(packed, index, t, state, workspace, output):
     """Store the state at output instant ``index``, with the pairs' complete outputs and the constraint forces."""
     output.t[index] = t
-    output.q[index] = state.q
-    output.v[index] = state.v
-    accelerations(packed, t, state.q, state.v, state.latched, workspace.acceleration, workspace, True)
-    output.pairs[index] = workspace.pair_out
-    output.work[index] = state.work
-    output.constraints[index] = workspace.constraint_forces
+    copy_into(output.q[index], state.q)
+    copy_into(output.v[index], state.v)
+    accelerations(packed, t, state.q, state.v, state.latched, workspace.acceleration, workspace, COMPLETE, CONSTRAINED)
+    copy_into(output.pairs[index], workspace.pair_out)
+    copy_into(output.work[index], state.work)
+    copy_into(output.constraints[index], workspace.constraint_forces)
 
 
 @numba.njit(cache=True)
@@ -88,6 +104,7 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
     q, v = state.q, state.v
     q_new, v_new = workspace.q_new, workspace.v_new
     # velocity Verlet's or generalized-α's carry, or the first Runge–Kutta stage, holds F at the current state
+    # (passed on as bool(ready): a literal False would compile a second copy of the step functions)
     ready, stepping = False, adaptive  # the step is h_adaptive (generalized-α's also after a retry)
     if verlet is not None:
         ready = method == VELOCITY_VERLET and verlet.ready[0] == 1
@@ -118,7 +135,7 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
 
             if implicit is not None:
                 status, accepted, h_adaptive, work_supplied, work_dissipated = generalized_alpha_step(
-                    packed, controls, adaptive, t, h, landing, h_adaptive, state, implicit, ready, workspace,
+                    packed, controls, adaptive, t, h, landing, h_adaptive, state, implicit, bool(ready), workspace,
                     output.counters)
                 if status != RUNNING:
                     break
@@ -127,16 +144,27 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                     continue
             if verlet is not None:  # the explicit methods
                 if method == CENTRAL_DIFFERENCE:
-                    work_supplied, work_dissipated = central_difference_step(packed, t, h, state, workspace,
-                                                                             output.counters)
+                    supplied, dissipated = accelerations(packed, t, q, v, state.latched, workspace.acceleration,
+                                                         workspace, PARTIAL, CONSTRAINED)
+                    output.counters[EVALUATIONS] += 1
+                    central_difference_positions(q, v, workspace.acceleration, h, q_new)
+                    work_supplied, work_dissipated = h * supplied, h * dissipated
                 elif method == VELOCITY_VERLET:
-                    work_supplied, work_dissipated = velocity_verlet_step(packed, t, h, state, verlet, ready,
-                                                                          workspace, output.counters)
+                    a, power, predicted_v = verlet.acceleration, verlet.power, workspace.stage_v
+                    if not ready:  # a(q, v) and its power
+                        power[0], power[1] = accelerations(packed, t, q, v, state.latched, a, workspace, PARTIAL,
+                                                           CONSTRAINED)
+                        output.counters[EVALUATIONS] += 1
+                    velocity_verlet_drift(q, v, a, h, q_new, v_new, predicted_v)
+                    supplied, dissipated = accelerations(packed, t + h, q_new, predicted_v, state.latched, a,
+                                                         workspace, PARTIAL, CONSTRAINED)
+                    output.counters[EVALUATIONS] += 1
+                    work_supplied, work_dissipated = velocity_verlet_kick(h, a, v_new, power, supplied, dissipated)
                     ready = True
                 else:
-                    status, accepted, h_adaptive, work_supplied, work_dissipated = runge_kutta_step(
-                        packed, tableau, controls, t, h, landing, h_adaptive, state, stages, ready, workspace,
-                        output.counters)
+                    runge_kutta_stages(packed, tableau, t, h, state, stages, bool(ready), workspace, output.counters)
+                    status, accepted, h_adaptive, work_supplied, work_dissipated = runge_kutta_acceptance(
+                        tableau, controls, t, h, landing, h_adaptive, q, v, q_new, v_new, stages, output.counters)
                     if status != RUNNING:
                         break
                     if not accepted:
@@ -163,8 +191,8 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
             status, culprit = check_state(q_new, v_new, controls.speed_limit)
             if status != RUNNING:
                 break
-            q[:] = q_new
-            v[:] = v_new
+            copy_into(q, q_new)
+            copy_into(v, v_new)
             state.work[0] += work_supplied
             state.work[1] += work_dissipated
             if stepping:

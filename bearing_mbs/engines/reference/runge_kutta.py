@@ -16,7 +16,8 @@ import math
 import numba
 
 from bearing_mbs.engines.reference.codes import EVALUATIONS, REJECTED, RUNNING, STEP_UNDERFLOW
-from bearing_mbs.engines.reference.dynamics import accelerations
+from bearing_mbs.engines.reference.copies import copy_into
+from bearing_mbs.engines.reference.dynamics import CONSTRAINED, PARTIAL, accelerations
 
 
 @numba.njit(cache=True)
@@ -38,7 +39,8 @@ def runge_kutta_stages(packed, tableau, t, h, state, stages, first_ready, worksp
                 velocity += h * a[i, j] * kv[j, m]
             stage_q[m], stage_v[m] = position, velocity
             kq[i, m] = velocity
-        kp[i, 0], kp[i, 1] = accelerations(packed, t + c[i] * h, stage_q, stage_v, latched, kv[i], workspace)
+        kp[i, 0], kp[i, 1] = accelerations(packed, t + c[i] * h, stage_q, stage_v, latched, kv[i], workspace, PARTIAL,
+                                           CONSTRAINED)
         counters[EVALUATIONS] += 1
     for m in range(n):
         position, velocity = q[m], v[m]
@@ -68,20 +70,18 @@ def error_norm(tableau, h, q, v, q_new, v_new, stages, tolerance):
 
 
 @numba.njit(cache=True, inline="always")
-def runge_kutta_step(packed, tableau, controls, t, h, landing, h_adaptive, state, stages, first_ready, workspace,
-                     counters):
-    """One attempt of a step from t to t + h; ``landing``: t + h is an output instant, ``h_adaptive`` [s]:
-    the current adaptive step.
+def runge_kutta_acceptance(tableau, controls, t, h, landing, h_adaptive, q, v, q_new, v_new, stages, counters):
+    """The end of one attempt of a step from (q, v) at t to (``q_new``, ``v_new``) at t + h, its stages done
+    (:func:`runge_kutta_stages`, which the driver calls); ``landing``: t + h is an output instant, ``h_adaptive``
+    [s]: the current adaptive step.
 
     Returns (status, accepted, h_adaptive, work_supplied, work_dissipated): a rejected step (error norm > 1
     or not finite) gives a smaller ``h_adaptive`` to retry with, or ``STEP_UNDERFLOW`` below 1e-14 of t.
     An accepted step proposes the next ``h_adaptive`` (kept at least as long as before when it only
     shortened to land) and returns its (supplied, dissipated) work [J]. Fixed-step tableaus always accept.
     """
-    runge_kutta_stages(packed, tableau, t, h, state, stages, first_ready, workspace, counters)
     if tableau.b_error.size > 0:
-        error = error_norm(tableau, h, state.q, state.v, workspace.q_new, workspace.v_new, stages,
-                           controls.tolerance)
+        error = error_norm(tableau, h, q, v, q_new, v_new, stages, controls.tolerance)
         factor = min(5.0, max(0.2, 0.9 * error ** (-1.0 / (tableau.error_order + 1)))) if error > 0 else 5.0
         if not error <= 1.0:  # also rejects a NaN error
             counters[REJECTED] += 1
@@ -102,6 +102,6 @@ def runge_kutta_step(packed, tableau, controls, t, h, landing, h_adaptive, state
 def reuse_last_stage(stages):
     """FSAL: the last stage, F at the accepted state, becomes the next step's first stage."""
     last = stages.power.shape[0] - 1
-    stages.velocity[0, :] = stages.velocity[last]
-    stages.acceleration[0, :] = stages.acceleration[last]
-    stages.power[0, :] = stages.power[last]
+    copy_into(stages.velocity[0], stages.velocity[last])
+    copy_into(stages.acceleration[0], stages.acceleration[last])
+    copy_into(stages.power[0], stages.power[last])
