@@ -71,7 +71,8 @@ class BearingSpec:
     d_o = D_pw + D_w + P_d/2. cage_diameter D_c [m]: the circle of the pocket edges P and Q (document eq. 45),
     inside the rollers' span (D_pw − D_w, D_pw + D_w). pocket_clearance H [m] > 0: the tangential play of a
     roller in its pocket. cage_guidance: ``rollers`` (default), ``inner_land`` or ``outer_land``, with
-    land_clearance [m] (diametral). cage_thickness, cage_width [m]: the cage ring's section (mass).
+    land_clearance [m] (diametral). cage_thickness, cage_width [m]: the cage ring's section, radial and axial (its
+    mass, and the height of the oiled pocket walls).
     inner_ring_bore, ring_width [m]: the inner ring's section (mass). supported_mass [kg] >= 0: the share of
     the shaft's mass the inner ring carries. Materials: ring_material, roller_material, cage_material.
     """
