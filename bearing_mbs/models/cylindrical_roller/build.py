@@ -172,6 +172,8 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
         return {}
     inner_speed = reference_rpm * RPM
     cage_speed = geometry.epicyclic_cage_speed(inner_speed)
+    if cage_speed**2 == 0:  # a reference speed so near rest (1e-160 rpm) that its square underflows: at rest
+        return {}
     if lubricant.model == "churning":
         oil, temperature = lubricant.lubricant(), lubricant.temperature
         density = mixture_density(lubricant.oil_fraction, oil.density(temperature))

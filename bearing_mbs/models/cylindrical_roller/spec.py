@@ -348,8 +348,9 @@ class LubricantSpec:
     (:mod:`bearing_mbs.models.cylindrical_roller.lubrication`).
 
     The oil: ``oil``, a preset of :data:`bearing_mbs.contact.lubricant.PRESETS` (ISO VG 220/320, mineral or PAO), or
-    its own viscosity_40 and viscosity_100 [m²/s] (kinematic, at 40 and 100 °C; both, and viscosity_100 <
-    viscosity_40), with density_15 [kg/m³] (default 870), thermal_expansion [1/K] of the density (default 6.4e-4),
+    its own viscosity_40 and viscosity_100 [m²/s] (kinematic, at 40 and 100 °C; both, in [2e-6, 1e-2] and
+    [2e-6, 1e-3], and viscosity_100 < viscosity_40), with density_15 [kg/m³] (default 870), thermal_expansion
+    [1/K] of the density (default 6.4e-4),
     pressure_viscosity α [1/Pa] (default 2e-8) and thermal_conductivity [W/(m K)] (default 0.13) replacing the
     preset's. temperature [°C]: the operating oil temperature, inside the oil's viscosity fit (-10 to 120 °C, refused
     outside, not extrapolated); lubricated traction (``friction_law = "ehl"``) needs it.
