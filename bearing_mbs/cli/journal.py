@@ -19,6 +19,9 @@ def _solve(spec, directory, figures):
 
 
 def _describe(summary) -> str:
-    return (f"{summary['scenario']}: load {summary['load_capacity']:.4g} N at ε = {summary['eccentricity_ratio']:g}, "
-            f"attitude {summary['attitude_angle']:.4g} deg, flow {summary['flow']:.4g} m³/s, "
-            f"stiffness ΔF/Δe {summary['static_stiffness'] / 1e6:.4g} N/µm")
+    def number(key, scale=1.0):  # undefined quantities (an attitude at zero load) are null in the summary
+        return "undefined" if summary[key] is None else f"{summary[key] * scale:.4g}"
+
+    return (f"{summary['scenario']}: load {number('load_capacity')} N at ε = {summary['eccentricity_ratio']:g}, "
+            f"attitude {number('attitude_angle')} deg, flow {number('flow')} m³/s, "
+            f"stiffness ΔF/Δe {number('static_stiffness', 1e-6)} N/µm")

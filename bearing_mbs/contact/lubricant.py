@@ -19,6 +19,9 @@ from dataclasses import dataclass
 
 #: The Walther offset of ASTM D341 [mm²/s].
 WALTHER_OFFSET = 0.7
+#: The lowest kinematic viscosity [m²/s] of a point of the fit: ASTM D341's Z = ν + 0.7 holds from 2 mm²/s (below it
+#: the standard adds terms; below 0.3 mm²/s log log Z is not defined at all).
+WALTHER_LOWEST = 2e-6
 #: Kelvin of 0 °C.
 ZERO_CELSIUS = 273.15
 
@@ -53,7 +56,8 @@ class Lubricant:
         def refuse(field, value, allowed):
             raise LubricantError(field, value, allowed)
 
-        for field, low, high, unit in (("viscosity_40", 1e-6, 1e-2, "m²/s"), ("viscosity_100", 1e-7, 1e-3, "m²/s"),
+        for field, low, high, unit in (("viscosity_40", WALTHER_LOWEST, 1e-2, "m²/s"),
+                                       ("viscosity_100", WALTHER_LOWEST, 1e-3, "m²/s"),
                                        ("density_15", 600.0, 1200.0, "kg/m³"), ("thermal_expansion", 0.0, 2e-3, "1/K"),
                                        ("pressure_viscosity", 5e-9, 4e-8, "1/Pa"),
                                        ("thermal_conductivity", 0.05, 0.5, "W/(m K)")):

@@ -30,13 +30,15 @@ ends, and the viscous friction torque :math:`T = \sum (\mu U\vartheta/h + \tfrac
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.sparse.linalg import spsolve
+from scipy.sparse.linalg import MatrixRankWarning, spsolve
 
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
+from bearing_mbs.fluid_film.newton import solve_balance
 from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply
 
 #: Cavitation models by name.
@@ -225,37 +227,89 @@ def solve_film(bearing: JournalBearing, state: JournalState, supply: Supply | No
     full = np.ones(n, dtype=bool)
     unknowns = np.zeros(n)
     unknowns[recess] = supply.pressure / 2 if grid.recess_count else 0.0
+    visited, iteration = {full.tobytes()}, 0
     for iteration in range(1, MAX_ITERATIONS + 1):
-        restrictor_slope, restrictor_constant = np.zeros(n), np.zeros(n)
-        if grid.recess_count and not fixed[recess].all():
-            for k in recess:
-                flow, slope = supply.restrictor.inflow(supply.pressure, unknowns[k], bearing.viscosity,
-                                                       bearing.density)
-                restrictor_slope[k], restrictor_constant[k] = -slope, -(flow - slope * unknowns[k])
-        system = (balance.pressure_flux + sp.diags(restrictor_slope)) @ sp.diags(full.astype(float)) \
-            + balance.fill_flux @ sp.diags((~full).astype(float))
-        right = -(balance.constant + restrictor_constant)
-        if fixed.any():
-            system = sp.diags((~fixed).astype(float)) @ system + sp.diags(fixed.astype(float))
-            right[fixed] = supply.pressure
         previous = unknowns
-        unknowns = spsolve(system.tocsc(), right)
+        unknowns = _solve_linear(balance, supply, bearing, recess, fixed, full, unknowns)
+        if not np.all(np.isfinite(unknowns)):  # a singular system: an active set with no steady solution
+            break
         if cavitation == "jfo":
             # p < 0 in a full cell or 1 − ϑ < 0 in a cavitated one violates complementarity; round-off is not a sign
             scale = np.where(full, max(np.abs(unknowns[full]).max(initial=0.0), 1.0), 1.0)
             switched = (unknowns < -1e-12 * scale) & ~fixed
         else:
             switched = np.zeros(n, dtype=bool)
-        settled = np.abs(unknowns[recess] - previous[recess]) <= 1e-10 * max(abs(supply.pressure), 1.0) \
+        # the recess pressures stop changing, to round-off of the larger of the supply and the recess pressures
+        tolerance = 1e-10 * max(abs(supply.pressure), np.abs(unknowns[recess]).max(initial=0.0), 1.0) \
+            if grid.recess_count else 0.0
+        settled = np.abs(unknowns[recess] - previous[recess]) <= tolerance \
             if grid.recess_count and not fixed[recess].all() else np.ones(0, dtype=bool)
         if not switched.any() and (settled.all() or _linear_restrictor(supply)):
-            break
-        full = np.where(switched, ~full, full)
-    else:
-        raise FilmNotConverged(f"the film did not settle in {MAX_ITERATIONS} iterations ({cavitation} cavitation)")
-    pressure = np.where(full, unknowns, 0.0)
-    void = np.where(full, 0.0, unknowns)
-    return _solution(grid, state, cavitation, balance, supply, pressure, void, iteration)
+            pressure = np.where(full, unknowns, 0.0)
+            void = np.where(full, 0.0, unknowns)
+            return _solution(grid, state, cavitation, balance, supply, pressure, void, iteration)
+        if switched.any():
+            full = np.where(switched, ~full, full)
+            if full.tobytes() in visited:  # the active set cycles
+                break
+            visited.add(full.tobytes())
+    solved = _globalised(balance, supply, bearing, recess, fixed, cavitation == "jfo")
+    if solved is not None:
+        return _solution(grid, state, cavitation, balance, supply, *solved, iteration)
+    raise FilmNotConverged(f"the film did not settle ({cavitation} cavitation): the iterations cycled, met a singular "
+                           f"system or took more than {MAX_ITERATIONS}")
+
+
+def _solve_linear(balance, supply, bearing, recess, fixed, full, unknowns) -> np.ndarray:
+    """The unknowns (p in full cells, 1 − ϑ in cavitated ones) of the balance with this active set and the
+    restrictors linearised about ``unknowns``; non-finite where the system is singular."""
+    n = balance.pressure_flux.shape[0]
+    restrictor_slope, restrictor_constant = np.zeros(n), np.zeros(n)
+    if recess.size and not fixed[recess].all():
+        for k in recess:
+            flow, slope = supply.restrictor.inflow(supply.pressure, unknowns[k], bearing.viscosity, bearing.density)
+            restrictor_slope[k], restrictor_constant[k] = -slope, -(flow - slope * unknowns[k])
+    system = (balance.pressure_flux + sp.diags(restrictor_slope)) @ sp.diags(full.astype(float)) \
+        + balance.fill_flux @ sp.diags((~full).astype(float))
+    right = -(balance.constant + restrictor_constant)
+    if fixed.any():
+        system = sp.diags((~fixed).astype(float)) @ system + sp.diags(fixed.astype(float))
+        right[fixed] = supply.pressure
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", MatrixRankWarning)  # reported as non-finite unknowns
+        return spsolve(system.tocsc(), right)
+
+
+def _globalised(balance, supply, bearing, recess, fixed, cavitating: bool):
+    """(pressure, void) by :func:`.newton.solve_balance`, started from the full film (the restrictors linearised about
+    half the supply pressure); for the mass-conserving film with linear restrictors then, with the cavitated cells it
+    found, the linear system once more, kept where it violates no sign (it is exact where it holds)."""
+    n = balance.pressure_flux.shape[0]
+
+    def inflow(pressure):
+        flow, slope = np.zeros(n), np.zeros(n)
+        if recess.size and not fixed[recess].all():
+            for k in recess:
+                flow[k], slope[k] = supply.restrictor.inflow(supply.pressure, pressure[k], bearing.viscosity,
+                                                             bearing.density)
+        return flow, slope
+
+    held = supply.pressure if fixed.any() else 0.0
+    around = np.full(n, supply.pressure / 2 if supply is not None else 0.0)
+    start = _solve_linear(balance, supply, bearing, recess, fixed, np.ones(n, dtype=bool), around)
+    start = np.where(np.isfinite(start), start, 0.0)
+    scale = max(np.abs(start).max(initial=0.0), abs(held), 1.0)
+    solved = solve_balance(balance.pressure_flux, balance.fill_flux, balance.constant, inflow, fixed, held, start, scale,
+                           cavitating)
+    if solved is None or not cavitating or not _linear_restrictor(supply):
+        return solved
+    pressure, void = solved
+    full = (void <= 0) | fixed
+    polished = _solve_linear(balance, supply, bearing, recess, fixed, full, pressure)
+    round_off = 1e-12 * np.where(full, max(np.abs(polished[full]).max(initial=0.0), 1.0), 1.0)
+    if np.all(np.isfinite(polished)) and not np.any((polished < -round_off) & ~fixed):
+        return np.where(full, polished, 0.0), np.where(full, 0.0, polished)
+    return pressure, void
 
 
 def _linear_restrictor(supply: Supply | None) -> bool:

@@ -16,7 +16,8 @@ REFERENCE_ADAPTIVE = ("dopri5", "generalized_alpha_adaptive")
 #: Of those, the implicit ones (Newton's method on the force elements' Jacobian).
 REFERENCE_IMPLICIT = ("generalized_alpha", "generalized_alpha_adaptive")
 
-#: Exudyn 1.13.6 ``DynamicSolverType`` members, by our snake-case name.
+#: Exudyn 1.13.6 ``DynamicSolverType`` members, by our snake-case name: those its ``SolveDynamic`` runs (it has a
+#: ``DVERK6`` member too, but raises NotImplementedFeatureError for it, so ``dverk6`` is refused here).
 EXUDYN_METHODS = {
     "generalized_alpha": "GeneralizedAlpha",
     "trapezoidal_index2": "TrapezoidalIndex2",
@@ -28,12 +29,11 @@ EXUDYN_METHODS = {
     "velocity_verlet": "VelocityVerlet",
     "ode23": "ODE23",
     "dopri5": "DOPRI5",
-    "dverk6": "DVERK6",
 }
 #: Names a method had before it got the name both engines use: old → new (accepted, with a warning).
 RENAMED_METHODS = {"rk44": "rk4"}
 EXUDYN_IMPLICIT = ("generalized_alpha", "trapezoidal_index2")
-EXUDYN_ADAPTIVE = ("ode23", "dopri5", "dverk6")
+EXUDYN_ADAPTIVE = ("ode23", "dopri5")
 CONNECTORS = ("compiled", "python", "native")
 #: How Exudyn's implicit solvers get the force elements' Jacobian: the elements' own (``analytic``) or Exudyn's
 #: finite differences of the force user function (``numerical``, 2n evaluations per Jacobian).

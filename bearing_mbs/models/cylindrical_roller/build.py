@@ -172,6 +172,8 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
         return {}
     inner_speed = reference_rpm * RPM
     cage_speed = geometry.epicyclic_cage_speed(inner_speed)
+    if cage_speed**2 == 0:  # a reference speed so near rest (1e-160 rpm) that its square underflows: at rest
+        return {}
     if lubricant.model == "churning":
         oil, temperature = lubricant.lubricant(), lubricant.temperature
         density = mixture_density(lubricant.oil_fraction, oil.density(temperature))
@@ -198,8 +200,8 @@ def cage_drag(spec: Spec, geometry: BearingGeometry) -> float:
 
 def pocket_film_law(spec: Spec, geometry: BearingGeometry) -> PairLaw:
     """The law of a pocket film pair: no dry contact of its own (the edge pairs have it), the film of the roller's
-    length on a wall of the pocket's height, in the oil at its operating temperature, floored at three times the
-    pocket's roughness (Λ = 3)."""
+    length on a wall as tall as the cage ring's section (:attr:`BearingGeometry.pocket_wall_half_width`), in the oil
+    at its operating temperature, floored at three times the pocket's roughness (Λ = 3)."""
     lubricant = spec.lubricant
     viscosity = lubricant.lubricant().dynamic_viscosity(lubricant.temperature)
     return PairLaw("power", stiffness=0.0, exponent=1.0, restitution=1.0, damping_factor=0.0,

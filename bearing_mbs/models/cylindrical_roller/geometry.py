@@ -49,6 +49,7 @@ class BearingGeometry:
     inner_race_diameter: float
     outer_race_diameter: float
     cage_diameter: float
+    cage_thickness: float  # t, the cage ring's radial section [m]
     pocket_clearance: float
     pocket_angle: float  # γ [rad]
     roller_mass: float
@@ -93,6 +94,7 @@ class BearingGeometry:
             inner_race_diameter=inner_race,
             outer_race_diameter=outer_race_diameter(pitch, d_w, clearance),
             cage_diameter=d_c,
+            cage_thickness=t,
             pocket_clearance=h,
             pocket_angle=pocket_angle(pitch, d_c, d_w, h),
             roller_mass=mass,
@@ -151,8 +153,15 @@ class BearingGeometry:
 
     @property
     def pocket_wall_half_width(self) -> float:
-        """Half the radial extent [m] of a pocket wall, from the cage circle D_c to its mirror 2D_pw − D_c."""
-        return abs(self.cage_diameter - self.pitch_diameter) / 2
+        """Half the radial extent [m] of a pocket wall: t/2, half the cage ring's radial thickness t.
+
+        A pocket is a window (D_w + 2H) × L_w cut through the cage ring's section (as the cage's mass counts it),
+        so each of its two walls is a face L_w long along the axis and t tall radially: the thickness of the ring
+        it is cut through. The film on it is taken centred on the narrowest gap, at the roller's
+        centre, as the wall is placed (:meth:`pocket_walls`; this model's pocket wraps the roller on both sides
+        of the pitch circle). The span |D_c − D_pw| between the edges P, Q and their mirrors is no height of a
+        wall: it is 0 for a cage on the pitch circle, a common design."""
+        return self.cage_thickness / 2
 
 
 def roller_mass(density: float, roller_diameter: float, roller_length: float) -> float:

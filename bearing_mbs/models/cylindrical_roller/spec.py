@@ -71,7 +71,8 @@ class BearingSpec:
     d_o = D_pw + D_w + P_d/2. cage_diameter D_c [m]: the circle of the pocket edges P and Q (document eq. 45),
     inside the rollers' span (D_pw − D_w, D_pw + D_w). pocket_clearance H [m] > 0: the tangential play of a
     roller in its pocket. cage_guidance: ``rollers`` (default), ``inner_land`` or ``outer_land``, with
-    land_clearance [m] (diametral). cage_thickness, cage_width [m]: the cage ring's section (mass).
+    land_clearance [m] (diametral). cage_thickness, cage_width [m]: the cage ring's section, radial and axial (its
+    mass, and the height of the oiled pocket walls).
     inner_ring_bore, ring_width [m]: the inner ring's section (mass). supported_mass [kg] >= 0: the share of
     the shaft's mass the inner ring carries. Materials: ring_material, roller_material, cage_material.
     """
@@ -348,8 +349,9 @@ class LubricantSpec:
     (:mod:`bearing_mbs.models.cylindrical_roller.lubrication`).
 
     The oil: ``oil``, a preset of :data:`bearing_mbs.contact.lubricant.PRESETS` (ISO VG 220/320, mineral or PAO), or
-    its own viscosity_40 and viscosity_100 [m²/s] (kinematic, at 40 and 100 °C; both, and viscosity_100 <
-    viscosity_40), with density_15 [kg/m³] (default 870), thermal_expansion [1/K] of the density (default 6.4e-4),
+    its own viscosity_40 and viscosity_100 [m²/s] (kinematic, at 40 and 100 °C; both, in [2e-6, 1e-2] and
+    [2e-6, 1e-3], and viscosity_100 < viscosity_40), with density_15 [kg/m³] (default 870), thermal_expansion
+    [1/K] of the density (default 6.4e-4),
     pressure_viscosity α [1/Pa] (default 2e-8) and thermal_conductivity [W/(m K)] (default 0.13) replacing the
     preset's. temperature [°C]: the operating oil temperature, inside the oil's viscosity fit (-10 to 120 °C, refused
     outside, not extrapolated); lubricated traction (``friction_law = "ehl"``) needs it.

@@ -6,8 +6,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from bearing_mbs.fluid_film.reynolds import CAVITATION
+from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS
+from bearing_mbs.fluid_film.reynolds import CAVITATION
 from bearing_mbs.spec import Spec
 from bearing_mbs.spec.fields import in_range, non_negative, one_of, positive, require
 
@@ -66,7 +67,9 @@ class JournalSection:
     speed_rpm [rpm] of the journal (counter-clockwise positive; 0: hydrostatic); viscosity μ [Pa s] > 0; density
     ρ [kg/m³] > 0; eccentricity_ratio ε = e/C in [0, 1) and attitude [deg], the direction of the journal centre's
     displacement from +x (the first recess is centred at its first_angle), for the static solve; cavitation
-    ``gumbel`` (half-Sommerfeld) or ``jfo`` (mass-conserving); grid = [n_theta, n_z] cells, each >= 4."""
+    ``gumbel`` (half-Sommerfeld) or ``jfo`` (mass-conserving: it needs an oil source, recesses fed from a supply
+    pressure > 0, a constant flow or a supply groove); grid = [n_theta, n_z] cells, each >= 4, fine enough that
+    every recess holds a cell centre."""
 
     diameter: float
     length: float
@@ -95,6 +98,27 @@ class JournalSection:
         if self.recesses is not None:
             require(self.recesses.axial_length <= self.length, "recesses.axial_length", self.recesses.axial_length,
                     f"<= length = {self.length:g} m")
+            self._check_recesses_resolved()
+        if self.cavitation == "jfo":
+            r = self.recesses
+            require(r is not None and (r.restrictor in ("none", "constant_flow") or r.supply_pressure > 0), "cavitation",
+                    self.cavitation, "'gumbel' unless the film has an oil source: the mass-conserving film fixes how "
+                    "much oil it holds from what enters it, and with none (a plain bore, or recesses whose restrictors "
+                    "feed from a supply pressure of 0) every cavitated film with ϑh constant along the bore solves it "
+                    "alike; give [journal.recesses] with supply_pressure > 0, a constant flow, or a supply groove "
+                    "(restrictor = 'none', 0 Pa for an ambient groove)")
+
+    def _check_recesses_resolved(self):
+        """Every recess holds a cell centre of the grid (a recess of no cell has no balance: a singular system)."""
+        r = self.recesses
+        bearing = JournalBearing(self.diameter, self.length, self.radial_clearance, self.viscosity, self.density,
+                                 Recesses(r.count, r.angular_width, r.axial_length, r.depth, r.first_angle))
+        empty = [k + 1 for k, area in enumerate(FilmGrid.build(bearing, *self.grid).recess_areas) if area == 0]
+        n_theta, n_z = self.grid
+        require(not empty, "grid", list(self.grid),
+                f"cells fine enough that every recess holds a cell centre: recess {empty[0] if empty else ''} "
+                f"({r.angular_width:g} deg × {r.axial_length:g} m) holds none of the cells of {360 / n_theta:g} deg × "
+                f"{self.length / n_z:g} m; refine the grid")
 
     @property
     def speed(self) -> float:

@@ -15,6 +15,8 @@ from bearing_mbs.models.rotor.spec import RotorSpec
 
 #: Orbits below this fraction of the clearance count as small (linear) motion for the growth rate.
 LINEAR_ORBIT = 0.1
+#: Fewest output instants in the second half of a run for the orbit's spectrum (whirl_frequency_ratio): below, none.
+SPECTRUM_INSTANTS = 4
 
 UNITS = {"equilibrium_eccentricity_ratio": "-", "mean_eccentricity_ratio": "-", "max_eccentricity_ratio": "-",
          "orbit_radius": "m", "orbit_amplitude": "m, m", "whirl_growth_rate": "1/s", "whirl_frequency_ratio": "-",
@@ -68,9 +70,13 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
     orbit = centre[window] - centre[window].mean(axis=0)
     ratio = np.hypot(*centre.T) / clearance
     motion = orbit[:, 0] - orbit[:, 0].mean()
-    frequencies = np.fft.rfftfreq(motion.size, d=float(np.mean(np.diff(result.time[window]))))
-    spectrum = np.abs(np.fft.rfft(motion * np.hanning(motion.size)))
+    spacing = np.diff(result.time[window])
     spin_frequency = float(np.mean(spin[window])) / (2 * math.pi)
+    whirl_ratio = None  # a spectrum needs a few instants, evenly spaced (a run stopped early may leave one or two)
+    if motion.size >= SPECTRUM_INSTANTS and np.all(spacing > 0):
+        frequencies = np.fft.rfftfreq(motion.size, d=float(np.mean(spacing)))
+        spectrum = np.abs(np.fft.rfft(motion * np.hanning(motion.size)))
+        whirl_ratio = _dominant_ratio(frequencies, spectrum, spin_frequency)
     summary = {
         "equilibrium_eccentricity_ratio": float(np.hypot(*final) / clearance),
         "mean_eccentricity_ratio": float(np.hypot(*centre[window].mean(axis=0)) / clearance),
@@ -78,7 +84,7 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
         "orbit_radius": float(np.hypot(*orbit.T).max()),
         "orbit_amplitude": (np.ptp(orbit, axis=0) / 2).tolist(),
         "whirl_growth_rate": whirl_growth_rate(result.time, np.hypot(*(centre - final).T), clearance),
-        "whirl_frequency_ratio": _dominant_ratio(frequencies, spectrum, spin_frequency),
+        "whirl_frequency_ratio": whirl_ratio,
         "linear_whirl_threshold_rpm": whirl_threshold(spec),
     }
     if spec.drive.ramp_time > 0 and spec.rotor.unbalance == 0:

@@ -20,7 +20,7 @@ MODEL_NAME = "slewing_bearing"
 
 @dataclass(frozen=True)
 class SlewingSection:
-    """``[slewing]``: pitch_diameter D_pw [m] > 0; ball_diameter D_w [m] > 0; conformity s = D_w/(2R_c) in
+    """``[slewing]``: pitch_diameter D_pw [m] > 0; ball_diameter D_w [m] in (0, D_pw); conformity s = D_w/(2R_c) in
     (0.5, 1); contact_angle α₀ [deg] in (0, 90) (document 002 never states it; 45° is the usual value of
     four-point-contact slewing bearings); balls: optional, at most trunc(π D_pw/D_w) (checked by the bearing);
     youngs_modulus [Pa] and poisson_ratio of the steel rings and balls (document 002: 200 GPa, 0.3); rings
@@ -42,6 +42,9 @@ class SlewingSection:
     def __post_init__(self):
         positive("pitch_diameter", self.pitch_diameter)
         positive("ball_diameter", self.ball_diameter)
+        require(self.ball_diameter < self.pitch_diameter, "ball_diameter", self.ball_diameter,
+                f"< pitch_diameter = {self.pitch_diameter:g} m: the inner raceway, D_pw − D_w cos α across, must "
+                "keep a positive diameter at every contact angle")
         in_range("conformity", self.conformity, 0.5, 1.0, "-", low_open=True, high_open=True)
         in_range("contact_angle", self.contact_angle, 0.0, 90.0, "deg", low_open=True, high_open=True)
         positive("youngs_modulus", self.youngs_modulus)
