@@ -344,8 +344,8 @@ ADAPTIVE_STEPS = 3e4
 
 def affordable(scenario: dict, changes: dict) -> bool:
     """False for an adaptive explicit run the step advisor puts at more than :data:`ADAPTIVE_STEPS` steps."""
-    engine = changes["solver.engine"]
-    if (engine, changes[f"solver.{engine}.method"]) not in ADAPTIVE_EXPLICIT:
+    engine = changes.get("solver.engine")  # None: the shipped solver, which is not adaptive explicit
+    if (engine, changes.get(f"solver.{engine}.method")) not in ADAPTIVE_EXPLICIT:
         return True
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "scenario.toml"

@@ -46,8 +46,8 @@ from bearing_mbs.engines.reference.tableaus import TABLEAUS
 from bearing_mbs.spec.solver import SolverSpec
 
 #: What a user reads while the driver compiles (the first run after an install or a change of the kernels).
-COMPILING = ("compiling the reference engine's driver (once after an install or a source change, about 1.5 min, and "
-             "as long again for generalized-alpha's; later runs load it from the cache)")
+COMPILING = ("compiling the reference engine's driver (once after an install or a source change: about 30 s for the "
+             "explicit methods, 1 min for generalized-alpha; later runs load it from the cache)")
 
 #: Wall time [s] of one compiled chunk between two looks at the progress meter and the stop request.
 _CHUNK_WALL_TIME = 0.2

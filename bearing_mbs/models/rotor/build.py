@@ -80,12 +80,35 @@ def equilibrium(spec: RotorSpec, speed: float) -> np.ndarray:
 
     if not np.any(weight):
         return np.zeros(2)
-    for guess in ([0.1, -0.3], [0.3, -0.6], [0.1, -0.9]):
+    linear = _linear_guess(residual, -weight / max(abs(weight[1]), 1.0))
+    if np.hypot(*linear) < LINEAR_ECCENTRICITY:  # the linear film's answer, exact to O(ε²), below what root resolves
+        return linear * clearance
+    for guess in (linear, [0.1, -0.3], [0.3, -0.6], [0.1, -0.9]):
         solution = root(residual, guess, method="hybr")
         if solution.success and np.hypot(*solution.x) < 1:
             return solution.x * clearance
     raise SpecError("drive.start_rpm", speed * 30 / math.pi,
                     "a speed at which the bearings carry the rotor's weight (no film equilibrium found below ε = 1)")
+
+
+#: Below this eccentricity ratio the film's force is linear in the eccentricity (to O(ε²)), and so is the
+#: equilibrium: the linear estimate is kept, where a root finder would stall on the force's rounding.
+LINEAR_ECCENTRICITY = 1e-6
+
+
+def _linear_guess(residual, target: np.ndarray, probe: float = 1e-3) -> np.ndarray:
+    """The eccentricity ratio (x, y)/C where the film's force, taken as linear in the eccentricity near the centre
+    (a stretch and a turn: x + iy ↦ a (x + iy), as a film symmetric about the centre is to first order), reaches ``target`` (the weight's opposite, in the residual's
+    units): ``a`` from the force at a small offset. At large Sommerfeld numbers (fast, viscous, tight) the
+    equilibrium lies orders of magnitude inside the fixed guesses, where Powell's method stalls."""
+    offset = complex(0.0, -probe)
+    lift = residual(np.array([offset.real, offset.imag])) - residual(np.zeros(2))
+    a = complex(*lift) / offset
+    if not (abs(a) > 0 and math.isfinite(abs(a))):
+        return np.array([0.1, -0.3])
+    guess = complex(*target) / a
+    guess *= min(1.0, 0.5 / abs(guess))  # inside the clearance
+    return np.array([guess.real, guess.imag])
 
 
 def growth_rate(spec: RotorSpec, speed: float) -> float:

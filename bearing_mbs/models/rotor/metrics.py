@@ -12,6 +12,7 @@ from bearing_mbs.fluid_film.journal import FILM_COLLAPSE
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.rotor.build import equilibrium, map_error, whirl_threshold
 from bearing_mbs.models.rotor.spec import RotorSpec
+from bearing_mbs.spec import SpecError
 
 #: Orbits below this fraction of the clearance count as small (linear) motion for the growth rate.
 LINEAR_ORBIT = 0.1
@@ -50,13 +51,25 @@ def _dominant_ratio(frequencies, spectrum, spin_frequency) -> float | None:
     return float(frequencies[band][np.argmax(spectrum[band])] / spin_frequency)
 
 
+def carried_equilibrium(spec: RotorSpec, speed: float) -> np.ndarray | None:
+    """The static equilibrium [m] at Ω [rad/s], or None where the films cannot carry the rotor's weight (a run-down
+    below the lift-off speed: valid input, whose run shows the film collapse)."""
+    try:
+        return equilibrium(spec, speed)
+    except SpecError:
+        return None
+
+
 def whirl_onset(spec: RotorSpec, time, centre, spin, samples: int = 24) -> float | None:
     """For a balanced rotor's speed sweep, the speed [rpm] at which the journal first strays more than :data:`LINEAR_ORBIT` of the clearance from its
     equilibrium at the current speed (interpolated between ``samples`` speeds), or None if it never does."""
     speeds = np.linspace(spin.min(), spin.max(), samples)
     if speeds[-1] <= speeds[0]:
         return None
-    points = np.array([equilibrium(spec, s) for s in speeds])
+    points = [carried_equilibrium(spec, s) for s in speeds]
+    if any(point is None for point in points):  # a sweep through speeds the films cannot carry: no linear onset
+        return None
+    points = np.array(points)
     current = np.stack([np.interp(spin, speeds, points[:, k]) for k in range(2)], axis=1)
     strayed = np.flatnonzero(np.hypot(*(centre - current).T) > LINEAR_ORBIT * spec.bearing.radial_clearance)
     return float(spin[strayed[0]] * 30 / math.pi) if strayed.size else None
@@ -66,7 +79,7 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
     centre, spin = _journal(spec, result)
     clearance = spec.bearing.radial_clearance
     window = result.time >= result.time[-1] / 2
-    final = equilibrium(spec, spec.drive.speed_rpm * math.pi / 30)
+    final = carried_equilibrium(spec, spec.drive.speed_rpm * math.pi / 30)
     orbit = centre[window] - centre[window].mean(axis=0)
     ratio = np.hypot(*centre.T) / clearance
     motion = orbit[:, 0] - orbit[:, 0].mean()
@@ -78,12 +91,13 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
         spectrum = np.abs(np.fft.rfft(motion * np.hanning(motion.size)))
         whirl_ratio = _dominant_ratio(frequencies, spectrum, spin_frequency)
     summary = {
-        "equilibrium_eccentricity_ratio": float(np.hypot(*final) / clearance),
+        "equilibrium_eccentricity_ratio": None if final is None else float(np.hypot(*final) / clearance),
         "mean_eccentricity_ratio": float(np.hypot(*centre[window].mean(axis=0)) / clearance),
         "max_eccentricity_ratio": float(ratio.max()),
         "orbit_radius": float(np.hypot(*orbit.T).max()),
         "orbit_amplitude": (np.ptp(orbit, axis=0) / 2).tolist(),
-        "whirl_growth_rate": whirl_growth_rate(result.time, np.hypot(*(centre - final).T), clearance),
+        "whirl_growth_rate": (None if final is None
+                              else whirl_growth_rate(result.time, np.hypot(*(centre - final).T), clearance)),
         "whirl_frequency_ratio": whirl_ratio,
         "linear_whirl_threshold_rpm": whirl_threshold(spec),
     }

@@ -76,6 +76,12 @@ def _contacts(bearing, x, z):
     return s, q, q[..., None] * unit, derivative, b
 
 
+class NotConverged(RuntimeError):
+    """An iteration of the static solution did not reach its tolerance: the load distribution's Newton loop
+    (:func:`~bearing_mbs.models.slewing_bearing.load_distribution.solve`; e.g. too few balls to hold the ring, a
+    singular stiffness) or the ring sectors' relaxation (:func:`relax`; e.g. rings far softer than the contacts)."""
+
+
 def relax(bearing, rings: FlexibleRings, x, z=None, tolerance: float = 1e-12, iterations: int = 60) -> np.ndarray:
     """Each ball's local displacements z (N, 8) [m] at the inner ring's rigid displacement x: the minimum of the
     energy in z, by Newton's method with a backtracking line search on the gradient."""
@@ -90,7 +96,7 @@ def relax(bearing, rings: FlexibleRings, x, z=None, tolerance: float = 1e-12, it
         hessian = block[None] + np.einsum("dkm,ndkl,dlp->nmp", _PICK, derivative, _PICK)
         step = np.linalg.solve(hessian, -gradient[..., None])[..., 0]
         z = z + step
-    raise RuntimeError(f"the ring sectors did not settle in {iterations} iterations")
+    raise NotConverged(f"the ring sectors did not settle in {iterations} iterations")
 
 
 def flexible_state(bearing, rings: FlexibleRings, x, z=None):

@@ -32,17 +32,12 @@ import numpy as np
 
 from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_stiffness
 from bearing_mbs.elements.slewing_bearings import bearing_state
-from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings, flexible_state
+from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings, NotConverged, flexible_state
 from bearing_mbs.models.slewing_bearing.geometry import ball_count
 from bearing_mbs.spec import SpecError
 
 #: Coordinates of the inner ring: radial shift [m], axial shift [m], tilt [rad].
 COORDINATES = ("radial", "axial", "tilt")
-
-
-class NotConverged(RuntimeError):
-    """:func:`solve`'s Newton loop did not reach its tolerance (e.g. too few balls to hold the ring: a singular
-    stiffness)."""
 
 
 def diagonal_stiffness(ball_diameter: float, conformity: float, pitch_diameter: float, contact_angle: float,

@@ -93,7 +93,8 @@ def slewing_summary(spec: SlewingSpec) -> tuple[dict, list[Distribution]]:
         checks, states = _solve(spec, bearing, rings, summary)
     except NotConverged as error:
         summary = {"scenario": spec.scenario.name, **status_entries([count], f"{error}. Likely fix: "
-                                                                    f"slewing.balls >= {MIN_BALLS}, or a smaller load"),
+                                                                    f"slewing.balls >= {MIN_BALLS}, a smaller load"
+                                                                    + (" or rings = 'rigid'" if rings else "")),
                    **summary}
         return rounded(json_safe(summary)), []
     summary = {"scenario": spec.scenario.name, **status_entries([count, *checks]), **summary}
