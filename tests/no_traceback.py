@@ -4,7 +4,7 @@ line's entry point, and check that it ran to a status or refused its input by na
 A command given a valid scenario either
 
 * runs to a status: exit code 0, 1 or 3, a ``summary.json`` whose ``status`` is the one the code says (success,
-  failed, suspect); the static commands (``journal``, ``slewing``) that have no status yet exit 0 with a summary; or
+  failed, suspect); or
 * refuses the input by name: exit code 2, nothing written, and the error line in the format of
   :class:`bearing_mbs.spec.SpecError`, ``error: FIELD = VALUE: what is allowed`` (its shape is checked, never
   its wording);
@@ -184,12 +184,9 @@ def check_outcome(code: int, out: Path, stderr: str) -> None:
         return
     assert code in STATUS_CODES.values(), f"exit code {code}"
     summary = json.loads((out / "summary.json").read_text())
-    status = summary.get("status")
-    if status is None:  # a static command without a status yet (issue 25, item 2): solved and written
-        assert code == 0, code
-    else:
-        assert STATUS_CODES[status] == code, (status, code)
-        event(f"status {status}")
+    status = summary["status"]
+    assert STATUS_CODES[status] == code, (status, code)
+    event(f"status {status}")
 
 
 # Strategies over a documented range, with its edges.
