@@ -82,10 +82,19 @@ def test_bad_input_is_refused(override, field, tmp_path, capsys):
     assert capsys.readouterr().err.strip().splitlines()[-1].startswith(f"error: {field} = ")
 
 
-def test_a_four_by_four_grid_is_suspect_by_its_grid_convergence(tmp_path):
-    """Issue 25: a 4 × 4 grid carries twice the converged load (4864 N against 2400 N); the command says so by
-    the grid_convergence check (exit 3), and only by it."""
-    summary, _ = _summary(tmp_path, "journal.grid=[4, 4]", code=3)
+def test_a_four_by_four_grid_is_refused_by_name(tmp_path, capsys):
+    """Issue 25: a 4 × 4 grid carried twice the converged load (4864 N against 2400 N), reported as a plain
+    result. Its 90° cells leave a 45° recess without a cell centre, so the recess is not in the film at all: the
+    grid is refused by name (exit 2) before anything is solved."""
+    out = tmp_path / "out"
+    assert main(["journal", SEED, "--out", str(out), "--set", "journal.grid=[4, 4]", "--no-figures"]) == 2
+    assert capsys.readouterr().err.startswith("error: journal.grid = ") and not out.exists()
+
+
+def test_a_coarse_grid_is_suspect_by_its_grid_convergence(tmp_path):
+    """An 8 × 4 grid resolves every recess but carries 1.6 times the converged load (3875 N against 2400 N): the
+    command says so by the grid_convergence check (exit 3), and only by it."""
+    summary, _ = _summary(tmp_path, "journal.grid=[8, 4]", code=3)
     assert summary["status"] == "suspect" and _failed(summary) == {"grid_convergence"}
 
 

@@ -50,12 +50,14 @@ ADAPTIVE_STEPS = 2e4
 FILM_MARGIN = 30.0
 
 
-def fastest_rate(bearing: dict, rotor: dict, speed_rpm: float) -> float:
-    """A generous estimate [1/s] of the rotor's fastest mode on its films: √(K/m) and c/m with Ocvirk's stiffness
-    μΩRL³/C³ and squeeze damping πμRL³/(2C³) at ε = 0, times :data:`FILM_MARGIN` (for the test's cost only)."""
+def fastest_rate(bearing: dict, rotor: dict, drive: dict, speed_rpm: float) -> float:
+    """A generous estimate [1/s] of the rotor's fastest mode: on its films √(K/m) and c/m with Ocvirk's stiffness
+    μΩRL³/C³ and squeeze damping πμRL³/(2C³) at ε = 0, times :data:`FILM_MARGIN`; the speed servo's gain over the
+    polar inertia (for the test's cost only)."""
     scale = rotor["bearings"] * bearing["viscosity"] * bearing["diameter"] / 2 * bearing["length"] ** 3 \
         / bearing["radial_clearance"] ** 3 * FILM_MARGIN
-    return max(math.sqrt(scale * speed_rpm * math.pi / 30 / rotor["mass"]), scale * math.pi / 2 / rotor["mass"])
+    return max(math.sqrt(scale * speed_rpm * math.pi / 30 / rotor["mass"]), scale * math.pi / 2 / rotor["mass"],
+               drive["gain"] / rotor["polar_inertia"])
 
 
 @st.composite
@@ -89,7 +91,7 @@ def rotor_scenarios(draw) -> dict:
     method = draw(st.sampled_from(REFERENCE_METHODS if engine == "reference" else tuple(EXUDYN_METHODS)))
     end = draw(log_uniform(1e-4, 2e-2))
     if (engine, method) in ADAPTIVE_EXPLICIT:
-        end = min(end, ADAPTIVE_STEPS / fastest_rate(bearing, rotor, max(speed, drive.get("start_rpm", 0.0))))
+        end = min(end, ADAPTIVE_STEPS / fastest_rate(bearing, rotor, drive, max(speed, drive.get("start_rpm", 0.0))))
     if "start_rpm" in drive:
         drive["ramp_time"] = draw(st.one_of(st.just(0.0), uniform(0.0, end)))
     return {"scenario": {"name": "drawn_rotor", "model": "rotor", "end_time": end,

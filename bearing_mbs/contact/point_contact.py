@@ -31,7 +31,7 @@ import math
 from typing import NamedTuple
 
 from scipy.optimize import brentq
-from scipy.special import ellipe, ellipk
+from scipy.special import ellipe, ellipkm1
 
 RINGS = ("inner", "outer")
 
@@ -50,6 +50,10 @@ def effective_modulus(youngs_modulus_1: float, poisson_ratio_1: float, youngs_mo
     return 2.0 / ((1 - poisson_ratio_1**2) / youngs_modulus_1 + (1 - poisson_ratio_2**2) / youngs_modulus_2)
 
 
+#: The largest ellipse ratio a/b :func:`ellipse_ratio` resolves (1 − F(ρ) ≈ 1e-29 there).
+MAX_ELLIPSE_RATIO = 1e15
+
+
 def ellipse_ratio(curvature_difference: float) -> float:
     """κ = a/b ≥ 1 for the curvature difference F(ρ) in [0, 1) (module docstring)."""
     if not 0.0 <= curvature_difference < 1.0:
@@ -59,11 +63,12 @@ def ellipse_ratio(curvature_difference: float) -> float:
 
     def mismatch(log_kappa):
         kappa = math.exp(log_kappa)
-        m = 1.0 - 1.0 / kappa**2
-        big_e, big_k = ellipe(m), ellipk(m)
+        p = 1.0 / kappa**2  # 1 − m: K(m) through ellipkm1(1 − m), exact where m rounds to 1 (κ > 1e8)
+        big_e, big_k = ellipe(1.0 - p), ellipkm1(p)
         return ((kappa**2 + 1) * big_e - 2 * big_k) / ((kappa**2 - 1) * big_e) - curvature_difference
 
-    return math.exp(brentq(mismatch, 1e-9, math.log(1e6), xtol=1e-14, rtol=1e-14))
+    # F(ρ) → 1 as κ → ∞ (a groove that fits the ball across, κ = 1e6 at 1 − F = 3e-11)
+    return math.exp(brentq(mismatch, 1e-9, math.log(MAX_ELLIPSE_RATIO), xtol=1e-14, rtol=1e-14))
 
 
 def hertz_contact(load: float, curvatures: tuple[float, float, float, float], modulus: float) -> EllipticalContact:
@@ -86,8 +91,8 @@ def hertz_approach(load: float, curvatures: tuple[float, float, float, float], m
     total = sum(curvatures)
     r1i, r1ii, r2i, r2ii = curvatures
     kappa = ellipse_ratio(abs((r1i - r1ii) + (r2i - r2ii)) / total)
-    m = 1.0 - 1.0 / kappa**2
-    star = 2 * ellipk(m) / math.pi * (math.pi / (2 * kappa**2 * ellipe(m))) ** (1 / 3)
+    p = 1.0 / kappa**2  # 1 − m (ellipkm1: exact where m rounds to 1)
+    star = 2 * ellipkm1(p) / math.pi * (math.pi / (2 * kappa**2 * ellipe(1.0 - p))) ** (1 / 3)
     return star * (3 * load / (2 * total) * 2 / modulus) ** (2 / 3) * total / 2
 
 

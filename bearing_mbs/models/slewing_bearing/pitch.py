@@ -20,7 +20,7 @@ from bearing_mbs.core.topology import Topology
 from bearing_mbs.elements import Load
 from bearing_mbs.elements.slewing_bearings import SlewingBearingJoint
 from bearing_mbs.io.figures import new_figure, save_figure
-from bearing_mbs.models.slewing_bearing.load_distribution import solve
+from bearing_mbs.models.slewing_bearing.load_distribution import NotConverged, solve
 from bearing_mbs.models.slewing_bearing.spec import SlewingSpec
 from bearing_mbs.models.slewing_bearing.static import bearing_of
 from bearing_mbs.spec import SpecError
@@ -82,8 +82,14 @@ def pitch_metrics(spec: SlewingSpec, scene: Scene, result) -> dict:
     picked = window[np.linspace(0, window.size - 1, min(COMPARED_INSTANTS, window.size)).round().astype(int)]
     dynamic = result.position[picked, 0:3]
     loads = applied_loads(spec, result.time[picked])
-    static = np.array([solve(bearing, load).displacement for load in loads])
-    mean_dynamic, mean_static = dynamic.mean(axis=0), static.mean(axis=0)
+    mean_dynamic = dynamic.mean(axis=0)
+    try:
+        static = np.array([solve(bearing, load).displacement for load in loads])
+    except NotConverged:  # no quasi-static solution to compare with (too few balls to hold the ring): no errors
+        return {"mean_displacement": mean_dynamic.tolist(), "quasi_static_displacement": None,
+                "quasi_static_error": None, "quasi_static_tracking_error": None,
+                "max_tilt": float(np.abs(result.position[:, 2]).max())}
+    mean_static = static.mean(axis=0)
     error = [abs(mean_dynamic[k] / mean_static[k] - 1) for k in (1, 2) if mean_static[k] != 0]
     tracking = [np.abs(dynamic[:, k] - static[:, k]).max() / np.abs(static[:, k]).max() for k in (1, 2)
                 if np.abs(static[:, k]).max() > 0]
@@ -105,9 +111,13 @@ def pitch_figures(spec: SlewingSpec, scene: Scene, result, directory) -> list[Pa
     axial.plot(result.time, result.position[:, 1] * 1e3, label="run")
     tilt.plot(result.time, np.degrees(result.position[:, 2]), label="run")
     sample = result.time[:: max(1, result.time.size // COMPARED_INSTANTS)]
-    static = np.array([solve(bearing_of(spec), load).displacement for load in applied_loads(spec, sample)])
-    axial.plot(sample, static[:, 1] * 1e3, "o", markersize=3, label="quasi-static at the same load")
-    tilt.plot(sample, np.degrees(static[:, 2]), "o", markersize=3, label="quasi-static at the same load")
+    try:
+        static = np.array([solve(bearing_of(spec), load).displacement for load in applied_loads(spec, sample)])
+    except NotConverged:  # nothing quasi-static to draw (pitch_metrics says so)
+        static = None
+    if static is not None:
+        axial.plot(sample, static[:, 1] * 1e3, "o", markersize=3, label="quasi-static at the same load")
+        tilt.plot(sample, np.degrees(static[:, 2]), "o", markersize=3, label="quasi-static at the same load")
     axial.set_ylabel("axial displacement [mm]")
     tilt.set_ylabel("tilt [deg]")
     tilt.set_xlabel("time [s]")
