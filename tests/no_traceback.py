@@ -141,7 +141,7 @@ def run_command(command: str, scenario: dict | Path, changes: dict | None = None
 #: CPU seconds an example may take before the watchdog asks the command to stop, as SIGINT would: valid input may
 #: ask for a long run (a stiff film under an adaptive explicit method, a 1e-12 tolerance), and the property is about
 #: how a command ends, not how long it takes.
-CPU_LIMIT = float(os.environ.get("NO_TRACEBACK_CPU_LIMIT", "3"))
+CPU_LIMIT = float(os.environ.get("NO_TRACEBACK_CPU_LIMIT", "1"))
 INTERRUPTED_CODE = 128 + signal.SIGINT
 
 
