@@ -240,7 +240,7 @@ def _simulation_settings(exu, settings, end_time):
     ti.automaticStepSize = settings.adaptive
     ti.absoluteTolerance = settings.tolerance
     ti.relativeTolerance = settings.tolerance
-    ti.minimumStepSize = 1e-14
+    ti.minimumStepSize = min(1e-14, 1e-6 * settings.step)  # below the largest step, however short (a 1e-16 s step)
     ti.generalizedAlpha.spectralRadius = settings.spectral_radius
     ti.newton.relativeTolerance = settings.tolerance
     return s
