@@ -26,6 +26,10 @@ import numpy as np
 #: Largest eccentricity ratio a film model is trusted at: beyond it the film is below 5 % of the clearance and metal
 #: contact is near (asperities, form errors and elastic deflection, which a rigid smooth film leaves out, decide).
 FILM_COLLAPSE = 0.95
+#: The most cells a film grid may have (n_theta × n_z): 28 times the journal's default 240 × 60, beyond any
+#: convergence the load needs (0.3 % on the default grid, docs/status.md). The journal command on 1000 × 400 cells
+#: took 0.8 GB and 100 s; a mutated grid of 7e7 × 60 asked numpy for 31 GiB before any check.
+MAX_CELLS = 400_000
 
 
 @dataclass(frozen=True)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
+from bearing_mbs.fluid_film.journal import MAX_CELLS, FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS
 from bearing_mbs.fluid_film.reynolds import CAVITATION
 from bearing_mbs.spec import Spec
@@ -95,6 +95,8 @@ class JournalSection:
         one_of("cavitation", self.cavitation, CAVITATION)
         require(len(self.grid) == 2 and all(isinstance(n, int) and n >= 4 for n in self.grid), "grid",
                 list(self.grid), "[n_theta, n_z], integers >= 4")
+        require(self.grid[0] * self.grid[1] <= MAX_CELLS, "grid", list(self.grid),
+                f"at most {MAX_CELLS} cells (n_theta × n_z)")
         if self.recesses is not None:
             require(self.recesses.axial_length <= self.length, "recesses.axial_length", self.recesses.axial_length,
                     f"<= length = {self.length:g} m")

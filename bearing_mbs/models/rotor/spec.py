@@ -7,6 +7,7 @@ import math
 from dataclasses import dataclass
 
 from bearing_mbs.elements.journal_bearings import SOURCES
+from bearing_mbs.fluid_film.journal import MAX_CELLS
 from bearing_mbs.spec import Spec
 from bearing_mbs.spec.fields import finite, in_range, non_negative, one_of, positive, require
 
@@ -57,6 +58,8 @@ class BearingSection:
         one_of("force", self.force, SOURCES)
         require(len(self.grid) == 2 and all(isinstance(n, int) and n >= 4 for n in self.grid), "grid",
                 list(self.grid), "[n_theta, n_z], integers >= 4")
+        require(self.grid[0] * self.grid[1] <= MAX_CELLS, "grid", list(self.grid),
+                f"at most {MAX_CELLS} cells (n_theta × n_z)")
 
 
 @dataclass(frozen=True)
