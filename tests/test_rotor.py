@@ -157,3 +157,20 @@ def test_spin_up_lifts_the_journal_on_both_engines():
         assert metrics["mean_eccentricity_ratio"] == pytest.approx(metrics["equilibrium_eccentricity_ratio"], rel=0.05)
         means.append(metrics["mean_eccentricity_ratio"])
     assert means[0] == pytest.approx(means[1], rel=0.01)
+
+
+def test_equilibrium_far_inside_the_clearance_follows_ocvirks_linear_load():
+    """At a large Sommerfeld number (1e6 rpm in a 0.5 µm clearance) the equilibrium lies at ε ≈ 6e-17, far below
+    what a root finder resolves on the film's force (issue 25: it was refused). Ocvirk's short bearing (Childs,
+    *Turbomachinery Rotordynamics*, 1993, eq. 3.47) gives W = π μ Ω R L³ ε / (4 C²) to first order in ε, at an
+    attitude of 90° − 4ε/π (the journal moves across the load): the equilibrium must match its size to 1e-6 and its
+    direction to 1e-5 rad (the model's linear estimate turns by about its 1e-6 probe; a fixed-guess root finder
+    fails outright here)."""
+    spec = load_spec(UNBALANCE, ["rotor.mass=1.0", "rotor.bearings=1", "rotor.unbalance=0", "scenario.gravity=9.81",
+                                 "bearing.diameter=1.0", "bearing.length=1.0", "bearing.radial_clearance=5e-7",
+                                 "bearing.viscosity=1.0", "bearing.force='short'", "drive.speed_rpm=1e6"])
+    speed = 1e6 * math.pi / 30
+    ratio = 4 * 5e-7**2 * 9.81 / (math.pi * 1.0 * speed * 0.5 * 1.0**3)
+    x, y = equilibrium(spec, speed) / 5e-7
+    assert math.hypot(x, y) == pytest.approx(ratio, rel=1e-6)
+    assert abs(y) <= 1e-5 * abs(x)  # across the (vertical) load

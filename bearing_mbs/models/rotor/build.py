@@ -96,10 +96,11 @@ def equilibrium(spec: RotorSpec, speed: float) -> np.ndarray:
 LINEAR_ECCENTRICITY = 1e-6
 
 
-def _linear_guess(residual, target: np.ndarray, probe: float = 1e-3) -> np.ndarray:
+def _linear_guess(residual, target: np.ndarray, probe: float = LINEAR_ECCENTRICITY) -> np.ndarray:
     """The eccentricity ratio (x, y)/C where the film's force, taken as linear in the eccentricity near the centre
-    (a stretch and a turn: x + iy ↦ a (x + iy), as a film symmetric about the centre is to first order), reaches ``target`` (the weight's opposite, in the residual's
-    units): ``a`` from the force at a small offset. At large Sommerfeld numbers (fast, viscous, tight) the
+    (a stretch and a turn: x + iy ↦ a (x + iy), as a film symmetric about the centre is to first order), reaches
+    ``target`` (the weight's opposite, in the residual's units): ``a`` from the force at an offset ``probe`` (its
+    second-order terms turn the answer by about ``probe``). At large Sommerfeld numbers (fast, viscous, tight) the
     equilibrium lies orders of magnitude inside the fixed guesses, where Powell's method stalls."""
     offset = complex(0.0, -probe)
     lift = residual(np.array([offset.real, offset.imag])) - residual(np.zeros(2))
