@@ -10,8 +10,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from bearing_mbs.spec import Spec
 from bearing_mbs.models.slewing_bearing.ring_stiffness import COEFFICIENTS, MOUNTS
+from bearing_mbs.spec import Spec
 from bearing_mbs.spec.fields import finite, in_range, one_of, positive, require
 
 #: The ``[scenario] model`` value of a slewing-bearing scenario.
