@@ -20,11 +20,12 @@ iteration on the balance alone.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.sparse.linalg import spsolve
+from scipy.sparse.linalg import MatrixRankWarning, spsolve
 
 #: Armijo's sufficient-decrease parameter [-] and the smallest damping of a step tried.
 ARMIJO, SMALLEST_DAMPING = 1e-4, 2.0**-40
@@ -71,6 +72,7 @@ def solve_balance(pressure_flux: sp.spmatrix, fill_flux: sp.spmatrix, constant: 
 
     free = sp.diags((~fixed).astype(float))
     pinned = sp.diags(fixed.astype(float))
+
     def solution(a, v):
         if not cavitating:
             return np.where(fixed, fixed_pressure, a * scale), v
@@ -85,18 +87,16 @@ def solve_balance(pressure_flux: sp.spmatrix, fill_flux: sp.spmatrix, constant: 
             return solution(a, v)
         _, slope = inflow(a * scale)
         balance_by_a = free @ sp.diags(rows) @ (pressure_flux - sp.diags(slope)) * scale + pinned
-        if not cavitating:
+        if cavitating:
+            radius = np.hypot(a, v)
+            by_a = np.where(radius > 0, 1.0 - a / np.where(radius > 0, radius, 1.0), _KINK)
+            by_v = np.where(radius > 0, 1.0 - v / np.where(radius > 0, radius, 1.0), _KINK)
+            jacobian = sp.bmat([[balance_by_a, free @ sp.diags(rows) @ fill_flux],
+                                [sp.diags(np.where(fixed, 0.0, by_a)), sp.diags(np.where(fixed, 1.0, by_v))]])
+            step = _newton_step(jacobian.tocsc(), f)
+        else:
             step = np.concatenate([_newton_step(balance_by_a.tocsc(), f), np.zeros_like(v)])
-            a, v, merit, found = _line_search(residual, a, v, step, merit)
-            if not found:
-                return solution(a, v) if np.abs(f).max() <= ROUND_OFF else None
-            continue
-        radius = np.hypot(a, v)
-        by_a = np.where(radius > 0, 1.0 - a / np.where(radius > 0, radius, 1.0), _KINK)
-        by_v = np.where(radius > 0, 1.0 - v / np.where(radius > 0, radius, 1.0), _KINK)
-        jacobian = sp.bmat([[balance_by_a, free @ sp.diags(rows) @ fill_flux],
-                            [sp.diags(np.where(fixed, 0.0, by_a)), sp.diags(np.where(fixed, 1.0, by_v))]]).tocsc()
-        a, v, merit, found = _line_search(residual, a, v, _newton_step(jacobian, f), merit)
+        a, v, merit, found = _line_search(residual, a, v, step, merit)
         if not found:
             return solution(a, v) if np.abs(f).max() <= ROUND_OFF else None
     return None
@@ -117,10 +117,6 @@ def _line_search(residual, a, v, step, merit):
 
 def _newton_step(jacobian: sp.csc_matrix, f: np.ndarray) -> np.ndarray:
     """Newton's step −J⁻¹F, or Levenberg–Marquardt's −(JᵀJ + λI)⁻¹JᵀF where J is singular."""
-    import warnings
-
-    from scipy.sparse.linalg import MatrixRankWarning
-
     with warnings.catch_warnings():
         warnings.simplefilter("error", MatrixRankWarning)
         try:

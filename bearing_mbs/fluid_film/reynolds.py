@@ -263,12 +263,8 @@ def solve_film(bearing: JournalBearing, state: JournalState, supply: Supply | No
 def _solve_linear(balance, supply, bearing, recess, fixed, full, unknowns) -> np.ndarray:
     """The unknowns (p in full cells, 1 − ϑ in cavitated ones) of the balance with this active set and the
     restrictors linearised about ``unknowns``; non-finite where the system is singular."""
-    n = balance.pressure_flux.shape[0]
-    restrictor_slope, restrictor_constant = np.zeros(n), np.zeros(n)
-    if recess.size and not fixed[recess].all():
-        for k in recess:
-            flow, slope = supply.restrictor.inflow(supply.pressure, unknowns[k], bearing.viscosity, bearing.density)
-            restrictor_slope[k], restrictor_constant[k] = -slope, -(flow - slope * unknowns[k])
+    flow, slope = _restrictor_inflow(supply, bearing, recess, fixed, unknowns)
+    restrictor_slope, restrictor_constant = -slope, -(flow - slope * unknowns)
     system = (balance.pressure_flux + sp.diags(restrictor_slope)) @ sp.diags(full.astype(float)) \
         + balance.fill_flux @ sp.diags((~full).astype(float))
     right = -(balance.constant + restrictor_constant)
@@ -280,6 +276,17 @@ def _solve_linear(balance, supply, bearing, recess, fixed, full, unknowns) -> np
         return spsolve(system.tocsc(), right)
 
 
+def _restrictor_inflow(supply, bearing, recess, fixed, pressure) -> tuple[np.ndarray, np.ndarray]:
+    """Every unknown's restrictor inflow q [m³/s] and its slope dq/dp at the pressures ``pressure`` [Pa]: the recesses'
+    (unless all are held at the supply pressure), zero elsewhere."""
+    flow, slope = np.zeros(pressure.size), np.zeros(pressure.size)
+    if recess.size and not fixed[recess].all():
+        for k in recess:
+            flow[k], slope[k] = supply.restrictor.inflow(supply.pressure, pressure[k], bearing.viscosity,
+                                                         bearing.density)
+    return flow, slope
+
+
 def _globalised(balance, supply, bearing, recess, fixed, cavitating: bool):
     """(pressure, void) by :func:`.newton.solve_balance`, started from the full film (the restrictors linearised about
     half the supply pressure); for the mass-conserving film with linear restrictors then, with the cavitated cells it
@@ -287,12 +294,7 @@ def _globalised(balance, supply, bearing, recess, fixed, cavitating: bool):
     n = balance.pressure_flux.shape[0]
 
     def inflow(pressure):
-        flow, slope = np.zeros(n), np.zeros(n)
-        if recess.size and not fixed[recess].all():
-            for k in recess:
-                flow[k], slope[k] = supply.restrictor.inflow(supply.pressure, pressure[k], bearing.viscosity,
-                                                             bearing.density)
-        return flow, slope
+        return _restrictor_inflow(supply, bearing, recess, fixed, pressure)
 
     held = supply.pressure if fixed.any() else 0.0
     around = np.full(n, supply.pressure / 2 if supply is not None else 0.0)

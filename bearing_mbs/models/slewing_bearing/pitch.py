@@ -86,16 +86,15 @@ def pitch_metrics(spec: SlewingSpec, scene: Scene, result) -> dict:
     try:
         static = np.array([solve(bearing, load).displacement for load in loads])
     except NotConverged:  # no quasi-static solution to compare with (too few balls to hold the ring): no errors
-        return {"mean_displacement": mean_dynamic.tolist(), "quasi_static_displacement": None,
-                "quasi_static_error": None, "quasi_static_tracking_error": None,
-                "max_tilt": float(np.abs(result.position[:, 2]).max())}
-    mean_static = static.mean(axis=0)
-    error = [abs(mean_dynamic[k] / mean_static[k] - 1) for k in (1, 2) if mean_static[k] != 0]
-    tracking = [np.abs(dynamic[:, k] - static[:, k]).max() / np.abs(static[:, k]).max() for k in (1, 2)
-                if np.abs(static[:, k]).max() > 0]
+        static = None
+    mean_static = None if static is None else static.mean(axis=0)
+    error = [] if static is None else [abs(mean_dynamic[k] / mean_static[k] - 1) for k in (1, 2)
+                                       if mean_static[k] != 0]
+    tracking = [] if static is None else [np.abs(dynamic[:, k] - static[:, k]).max() / np.abs(static[:, k]).max()
+                                          for k in (1, 2) if np.abs(static[:, k]).max() > 0]
     return {
         "mean_displacement": mean_dynamic.tolist(),
-        "quasi_static_displacement": mean_static.tolist(),
+        "quasi_static_displacement": None if mean_static is None else mean_static.tolist(),
         "quasi_static_error": max(error) if error else None,
         "quasi_static_tracking_error": max(tracking) if tracking else None,
         "max_tilt": float(np.abs(result.position[:, 2]).max()),
