@@ -207,6 +207,22 @@ def uniform(low: float, high: float, *, low_open: bool = False, high_open: bool 
     return st.one_of(st.floats(first, last), st.sampled_from([first, last]))
 
 
+def solver_table(draw, end: float, engine: str, method: str, steps: int) -> dict:
+    """A ``[solver]`` table for a run of ``end`` [s] with ``engine``'s ``method``: 1 to 20 output instants, at most
+    ``steps`` steps (Exudyn at least one per output instant), and now and then a tolerance, a spectral radius and
+    Exudyn's Jacobian."""
+    outputs = draw(st.integers(1, 20))
+    count = draw(st.integers(outputs if engine == "exudyn" else 1, steps))
+    table = {"engine": engine, "output_interval": end / outputs, engine: {"method": method, "step": end / count}}
+    if draw(st.booleans()):
+        table[engine]["tolerance"] = draw(log_uniform(1e-12, 0.5))
+    if draw(st.booleans()):
+        table[engine]["spectral_radius"] = draw(uniform(0.0, 1.0))
+    if engine == "exudyn":
+        table["exudyn"]["jacobian"] = draw(st.sampled_from(["analytic", "numerical"]))
+    return table
+
+
 def optional(changes: dict, strategy: st.SearchStrategy, path: str, draw) -> None:
     """Put a value of ``strategy`` at ``path`` of ``changes`` half the time."""
     if draw(st.booleans()):

@@ -18,22 +18,15 @@ from hypothesis import strategies as st
 
 from bearing_mbs.spec.solver import EXUDYN_METHODS, REFERENCE_METHODS
 
-from no_traceback import PROFILE, log_uniform, run_command, uniform
+from no_traceback import PROFILE, log_uniform, run_command, solver_table, uniform
 
 STEPS = 300
 RPM = 1e6  # drive speeds in (0, 1e6] rpm
 
 
 def solver(draw, end: float, engine: str, method: str) -> dict:
-    outputs = draw(st.integers(1, 20))
-    steps = draw(st.integers(outputs if engine == "exudyn" else 1, STEPS))
-    table = {"engine": engine, "output_interval": end / outputs, engine: {"method": method, "step": end / steps}}
-    if draw(st.booleans()):
-        table[engine]["tolerance"] = draw(log_uniform(1e-12, 0.5))
-    if draw(st.booleans()):
-        table[engine]["spectral_radius"] = draw(uniform(0.0, 1.0))
+    table = solver_table(draw, end, engine, method, STEPS)
     if engine == "exudyn":
-        table["exudyn"]["jacobian"] = draw(st.sampled_from(["analytic", "numerical"]))
         table["exudyn"]["connector"] = draw(st.sampled_from(["compiled", "compiled", "python"]))
     if draw(st.integers(0, 3)) == 0:
         table["speed_limit"] = draw(log_uniform(1e-3, 1e4))

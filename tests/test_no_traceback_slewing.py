@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 from bearing_mbs.spec.solver import EXUDYN_METHODS, REFERENCE_METHODS
 
-from no_traceback import PROFILE, log_uniform, run_command, uniform
+from no_traceback import PROFILE, log_uniform, run_command, solver_table, uniform
 
 #: At most this many steps of a fixed-step method.
 STEPS = 300
@@ -42,17 +42,7 @@ def load(draw) -> dict:
 def solver(draw, end: float) -> dict:
     engine = draw(st.sampled_from(["reference", "exudyn"]))
     method = draw(st.sampled_from(REFERENCE_METHODS if engine == "reference" else tuple(EXUDYN_METHODS)))
-    outputs = draw(st.integers(1, 20))
-    steps = draw(st.integers(outputs if engine == "exudyn" else 1, STEPS))
-    table = {"engine": engine, "output_interval": end / outputs,
-             engine: {"method": method, "step": end / steps}}
-    if draw(st.booleans()):
-        table[engine]["tolerance"] = draw(log_uniform(1e-12, 0.5))
-    if draw(st.booleans()):
-        table[engine]["spectral_radius"] = draw(uniform(0.0, 1.0))
-    if engine == "exudyn":
-        table["exudyn"]["jacobian"] = draw(st.sampled_from(["analytic", "numerical"]))
-    return table
+    return solver_table(draw, end, engine, method, STEPS)
 
 
 @st.composite
