@@ -66,6 +66,7 @@ def slewing_scenarios(draw) -> tuple[str, dict]:
         slewing["mount"] = draw(st.sampled_from(["free", "fixed"]))
         # as printed, the free rings' matrices are refused (two errata): drawn now and then
         slewing["coefficients"] = draw(st.sampled_from(["corrected"] * 3 + ["as_printed"]))
+        slewing["coupling"] = draw(st.sampled_from(["structural", "full_matrix"]))
     end = draw(log_uniform(1e-3, 0.5))
     scenario = {"scenario": {"name": "drawn_slewing", "model": "slewing_bearing", "end_time": end,
                              "gravity": draw(st.one_of(st.just(9.81), uniform(0.0, 100.0)))},

@@ -45,14 +45,25 @@ def test_the_seed_scenarios_solve(diameter, tmp_path):
     assert len(summary["ball_loads"]) == BALLS[diameter] == len(summary["contact_angles"])
 
 
-def test_flexible_rings_write_both_curves(tmp_path):
+def test_the_documents_validation_case_writes_both_curves_and_the_finite_element_one(tmp_path):
     out = tmp_path / "out"
-    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out), "--set",
-                 "slewing.rings='flexible'", "--set", "slewing.mount='fixed'"]) == 0
+    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500_validation.toml"), "--out", str(out)]) == 0
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["rings"] == "flexible" and summary["mount"] == "fixed"
+    assert (summary["rings"], summary["mount"], summary["coupling"]) == ("flexible", "fixed", "structural")
     assert all(0 < f < r for (_, f), (_, r) in zip(summary["axial_curve"], summary["rigid_axial_curve"]))
+    assert [d for d, _ in summary["finite_element_axial_curve"]] == pytest.approx([d for d, _ in
+                                                                                    summary["axial_curve"]])
+    assert len(summary["rigid_ball_loads"]) == len(summary["ball_loads"])
     assert (out / "axial_curve.png").stat().st_size > 10_000
+
+
+def test_the_stiffness_names_each_entry_and_its_unit(tmp_path):
+    out = tmp_path / "out"
+    assert main(["slewing", str(SCENARIOS / "seed_slewing_pitch.toml"), "--out", str(out), "--no-figures"]) == 0
+    stiffness = json.loads((out / "summary.json").read_text())["stiffness"]
+    assert len(stiffness) == 9
+    assert stiffness["d_axial_force/d_axial"]["unit"] == "N/m" and stiffness["d_moment/d_tilt"]["unit"] == "N m/rad"
+    assert stiffness["d_axial_force/d_axial"]["value"] > 0
 
 
 def test_a_combined_load_writes_the_state_and_figures(tmp_path):
@@ -94,17 +105,19 @@ def test_two_balls_are_suspect(tmp_path):
     assert _failed(json.loads((out / "summary.json").read_text())) == {"ball_count", "contact_pressure"}
 
 
-@pytest.mark.parametrize("override, field", [
-    ("slewing.conformity=1.2", "slewing.conformity"),
-    ("slewing.contact_angle=95", "slewing.contact_angle"),
-    ("slewing.balls=300", "slewing.balls"),
-    ("load.axial=1e6", "load.axial_displacements"),
-    ("slewing.rings='elastic'", "slewing.rings"),
-    ("slewing.mount='bolted'", "slewing.mount"),
-    ("slewing.coefficients='as_printed'", "slewing.coefficients"),
+@pytest.mark.parametrize("overrides, field", [
+    (["slewing.conformity=1.2"], "slewing.conformity"),
+    (["slewing.contact_angle=95"], "slewing.contact_angle"),
+    (["slewing.balls=300"], "slewing.balls"),
+    (["load.axial=1e6"], "load.axial_displacements"),
+    (["slewing.rings='elastic'"], "slewing.rings"),
+    (["slewing.mount='bolted'"], "slewing.mount"),
+    (["slewing.coupling='series'"], "slewing.coupling"),
+    (["slewing.mount='free'", "slewing.coefficients='as_printed'"], "slewing.coefficients"),
 ])
-def test_bad_input_is_refused(override, field, tmp_path, capsys):
+def test_bad_input_is_refused(overrides, field, tmp_path, capsys):
     out = tmp_path / "out"
-    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out), "--set", override]) == 2
+    sets = [argument for override in overrides for argument in ("--set", override)]
+    assert main(["slewing", str(SCENARIOS / "seed_slewing_1500.toml"), "--out", str(out), *sets]) == 2
     assert not out.exists()
     assert capsys.readouterr().err.strip().splitlines()[-1].startswith(f"error: {field} = ")

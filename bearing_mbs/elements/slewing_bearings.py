@@ -7,6 +7,16 @@ The body's displacement from where it starts, in the bearing's axial plane (x: r
 Q = K (|s| − A₀)^{3/2} along s when the centres have moved apart. The body receives −Σ Bᵀ Q ŝ, the force of the
 potential Σ K δ^{5/2}/(5/2) (conservative), plus a stiffness-proportional damping −β K_t v with K_t the bearing's
 tangent stiffness (dissipating β vᵀK_t v ≥ 0). The outer ring is the ground.
+
+**Flexible rings** (:mod:`bearing_mbs.models.slewing_bearing.flexible` builds them): each ball's ring sectors have
+coordinates η (m per ball) that move the diagonals' ends, s_d = A₀ e_d + B x + M_d η (``modes`` M, (2, 2, m)),
+with the sectors' energy ½ ηᵀ K_η η (``sector`` K_η, m×m). The sectors are massless: at every evaluation each
+ball's η minimises ½ ηᵀ K_η η + Σ_d K δ_d^{5/2}/(5/2) (convex; :func:`ball_state`, Newton's method), and the ball
+acts on the inner ring with f = Σ_d Q_d ŝ_d and the tangent ∂f/∂w = Σ D_d − (Σ D_d M_d) H⁻¹ (Σ M_dᵀ D_d) at the
+ball's rigid offset w = B x (H the Hessian in η, D_d = ∂(Qŝ)/∂s). The same function serves the quasi-static model
+(:func:`flexible_bearing_state`) and the force element. With flexible rings the analytic Jacobian leaves out the
+damping's change with the tangent (β ∂(K_t ẋ)/∂x): Newton's iterations converge a little slower, the solution
+is the same.
 """
 
 from __future__ import annotations
@@ -40,6 +50,8 @@ class SlewingBearingJoint:
     stiffness: float
     damping: float
     reference: tuple[float, float, float]
+    modes: np.ndarray | None = None
+    sector: np.ndarray | None = None
 
 
 class SlewingBearingArrays(NamedTuple):
@@ -51,17 +63,27 @@ class SlewingBearingArrays(NamedTuple):
     stiffness: np.ndarray  # (J,) [N/m^1.5]
     damping: np.ndarray  # (J,) [s]
     reference: np.ndarray  # (J, 3)
+    flexible: np.ndarray  # (J,) bool: flexible rings
+    modes: np.ndarray  # (J, 2, 2, m): M_d of each joint, zero-padded to the largest m (0 without flexible rings)
+    sector: np.ndarray  # (J, m, m): K_η, identity on the padding (its coordinates feel no force and stay 0)
 
 
 def pack(joints) -> SlewingBearingArrays:
     def column(get, dtype=float):
         return np.array([get(j) for j in joints], dtype=dtype)
 
+    m = max((j.sector.shape[0] for j in joints if j.sector is not None), default=0)
+    modes, sector = np.zeros((len(joints), 2, 2, m)), np.tile(np.eye(m), (len(joints), 1, 1))
+    for n, joint in enumerate(joints):
+        if joint.sector is not None:
+            size = joint.sector.shape[0]
+            modes[n, :, :, :size], sector[n, :size, :size] = joint.modes, joint.sector
     return SlewingBearingArrays(
         body=column(lambda j: j.body, np.int64), balls=column(lambda j: j.balls, np.int64),
         pitch_radius=column(lambda j: j.pitch_radius), centre_distance=column(lambda j: j.centre_distance),
         contact_angle=column(lambda j: j.contact_angle), stiffness=column(lambda j: j.stiffness),
-        damping=column(lambda j: j.damping), reference=column(lambda j: j.reference).reshape(-1, 3))
+        damping=column(lambda j: j.damping), reference=column(lambda j: j.reference).reshape(-1, 3),
+        flexible=column(lambda j: j.sector is not None, np.bool_), modes=modes, sector=sector)
 
 
 @numba.njit(cache=True, inline="always")
@@ -77,6 +99,125 @@ def diagonal(a0, alpha, r, c, d, radial, axial, tilt, k):
     return s_r, s_z, length, k * approach**1.5, 1.5 * k * math.sqrt(approach)
 
 
+#: Newton's method of :func:`ball_state`: converged when the gradient in η is below RELAX_TOLERANCE × the ball's
+#: largest diagonal force (or 1 N), at most RELAX_ITERATIONS steps. A step is halved only where it raises the energy
+#: by more than ENERGY_ROUND_OFF of it: the approach |s| − A₀ loses digits to cancellation (about 1e-12 of the energy
+#: of a lightly loaded ball), and near the minimum a strict test would reject Newton's good steps.
+RELAX_TOLERANCE = 1e-10
+RELAX_ITERATIONS = 60
+ENERGY_ROUND_OFF = 1e-9
+
+
+@numba.njit(cache=True)
+def _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope):
+    """Fill s (2, 2), Q and Q′ (2,) of the ball's diagonals d = +1, −1 at rigid offset w and sector coordinates η;
+    return their energy Σ K δ^{5/2}/(5/2) [J]."""
+    energy = 0.0
+    for n in range(2):
+        d = 1.0 - 2.0 * n
+        s_r = a0 * math.cos(alpha) + w_r
+        s_z = d * a0 * math.sin(alpha) + w_z
+        for i in range(eta.size):
+            s_r += modes[n, 0, i] * eta[i]
+            s_z += modes[n, 1, i] * eta[i]
+        s[n, 0], s[n, 1] = s_r, s_z
+        approach = math.sqrt(s_r * s_r + s_z * s_z) - a0
+        if approach > 0.0:
+            load[n], slope[n] = k * approach**1.5, 1.5 * k * math.sqrt(approach)
+            energy += k * approach**2.5 / 2.5
+        else:
+            load[n] = slope[n] = 0.0
+    return energy
+
+
+@numba.njit(cache=True)
+def _derivatives(s, load, slope, derivative):
+    """D_d = ∂(Q ŝ)/∂s = Q′ ŝŝᵀ + (Q/|s|)(I − ŝŝᵀ) (2, 2, 2) of the two diagonals."""
+    for n in range(2):
+        length = math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2)
+        for a in range(2):
+            for b in range(2):
+                derivative[n, a, b] = ((slope[n] - load[n] / length) * s[n, a] * s[n, b] / length**2
+                                       + (load[n] / length if a == b else 0.0))
+
+
+@numba.njit(cache=True)
+def ball_state(a0, alpha, k, w_r, w_z, modes, sector, eta, force, tangent, load, s):
+    """One ball at rigid offset w = (w_r, w_z) [m] (module docstring): relax its sector coordinates ``eta`` (m,) in
+    place from their value (Newton's method on the convex energy, halving a step that raises it), and fill
+    ``force`` f (2,) [N], ``tangent`` ∂f/∂w (2, 2) [N/m], the diagonals' ``load`` Q (2,) [N] and separations ``s``
+    (2, 2) [m]. Returns (energy [J], converged). With m = 0 (rigid rings) no iteration."""
+    m = eta.size
+    slope = np.zeros(2)
+    derivative = np.zeros((2, 2, 2))
+    energy = _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope)
+    _derivatives(s, load, slope, derivative)
+    converged = True
+    hessian = np.eye(max(m, 1))
+    if m > 0:
+        energy += 0.5 * eta @ sector @ eta
+        for iteration in range(RELAX_ITERATIONS + 1):
+            gradient = sector @ eta
+            hessian = sector.copy()
+            for n in range(2):
+                if load[n] > 0.0:
+                    gradient += modes[n].T @ (load[n] * s[n] / math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2))
+                    hessian += modes[n].T @ derivative[n] @ modes[n]
+            if np.abs(gradient).max() <= RELAX_TOLERANCE * max(load[0], load[1], 1.0):
+                break
+            if iteration == RELAX_ITERATIONS:
+                converged = False
+                break
+            step = np.linalg.solve(hessian, -gradient)
+            previous = eta.copy()
+            factor = 1.0
+            while True:
+                eta[:] = previous + factor * step
+                trial = 0.5 * eta @ sector @ eta + _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope)
+                if trial <= energy + ENERGY_ROUND_OFF * abs(energy) or factor < 1e-6:
+                    energy = trial
+                    break
+                factor *= 0.5
+            _derivatives(s, load, slope, derivative)
+    force[:] = 0.0
+    tangent[:] = 0.0
+    coupling = np.zeros((2, m))
+    for n in range(2):
+        if load[n] > 0.0:
+            force += load[n] * s[n] / math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2)
+            tangent += derivative[n]
+            if m > 0:
+                coupling += derivative[n] @ modes[n]
+    if m > 0:
+        tangent -= coupling @ np.linalg.solve(hessian, np.ascontiguousarray(coupling.T))
+    return energy, converged
+
+
+@numba.njit(cache=True)
+def flexible_bearing_state(balls, pitch_radius, a0, alpha, k, modes, sector, displacement, eta):
+    """All balls at the inner ring's ``displacement`` (3,), their sector coordinates ``eta`` (N, m) relaxed in place:
+    (load (3,) [N, N, N m], tangent (3, 3), loads Q (N, 2) [N], separations s (N, 2, 2) [m], energy [J], every ball
+    converged)."""
+    load = np.zeros(3)
+    tangent = np.zeros((3, 3))
+    loads = np.zeros((balls, 2))
+    separations = np.zeros((balls, 2, 2))
+    force, ball_tangent = np.zeros(2), np.zeros((2, 2))
+    b = np.zeros((2, 3))
+    energy, converged = 0.0, True
+    for n in range(balls):
+        c = math.cos(2.0 * math.pi * n / balls)
+        b[0, 0], b[1, 1], b[1, 2] = c, 1.0, pitch_radius * c
+        w = b @ displacement
+        ball_energy, ok = ball_state(a0, alpha, k, w[0], w[1], modes, sector, eta[n], force, ball_tangent,
+                                     loads[n], separations[n])
+        energy += ball_energy
+        converged = converged and ok
+        load += b.T @ force
+        tangent += b.T @ ball_tangent @ b
+    return load, tangent, loads, separations, energy, converged
+
+
 @numba.njit(cache=True, inline="always")
 def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
     joints = parameters
@@ -89,6 +230,14 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         alpha, beta, balls = joints.contact_angle[j], joints.damping[j], joints.balls[j]
         f0 = f1 = f2 = 0.0
         k00 = k01 = k02 = k11 = k12 = k22 = 0.0
+        if joints.flexible[j]:
+            load, tangent, _, _, _, _ = flexible_bearing_state(
+                balls, r, a0, alpha, k, joints.modes[j], joints.sector[j], np.array([radial, axial, tilt]),
+                np.zeros((balls, joints.sector.shape[1])))
+            f0, f1, f2 = load[0], load[1], load[2]
+            k00, k01, k02, k11, k12, k22 = (tangent[0, 0], tangent[0, 1], tangent[0, 2], tangent[1, 1],
+                                            tangent[1, 2], tangent[2, 2])
+            balls = 0  # the loop below is the rigid rings'
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
             for d in (1.0, -1.0):
@@ -153,9 +302,21 @@ def bearing_state(balls: int, pitch_radius: float, centre_distance: float, conta
     return load, tangent, q, np.arctan2(np.abs(s_z), s_r)
 
 
+def _flexible_state(joints, j, displacement):
+    """(load, tangent, energy) of joint j with flexible rings at one displacement (3,) (:func:`ball_state`)."""
+    load, tangent, _, _, energy, _ = flexible_bearing_state(
+        joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j], joints.contact_angle[j],
+        joints.stiffness[j], joints.modes[j], joints.sector[j], np.asarray(displacement, dtype=float),
+        np.zeros((joints.balls[j], joints.sector.shape[1])))
+    return load, tangent, energy
+
+
 def _state(joints, j, q):
-    """Bearing load (3,) and tangent stiffness (3, 3) of joint j at positions q, with numpy."""
+    """Bearing load (3,) and tangent stiffness (3, 3) of joint j at positions q: with numpy for rigid rings, with
+    the compiled :func:`ball_state` for flexible ones (no numpy twin of the sectors' relaxation)."""
     i = 3 * joints.body[j]
+    if joints.flexible[j]:
+        return _flexible_state(joints, j, q[i:i + 3] - joints.reference[j])[:2]
     load, tangent, _, _ = bearing_state(joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j],
                                         joints.contact_angle[j], joints.stiffness[j], q[i:i + 3] - joints.reference[j])
     return load, tangent
@@ -171,10 +332,14 @@ def add_forces_twin(joints, t, q, v, latched, forces, pair_out, power, complete)
 
 
 def potential_energy(joints, position, pair_output):
-    """Σ K δ^{5/2}/(5/2) over the balls' diagonals [J] at each output instant."""
+    """Σ K δ^{5/2}/(5/2) over the balls' diagonals [J] at each output instant, plus the ring sectors' ½ ηᵀ K_η η
+    with flexible rings."""
     energy = np.zeros(position.shape[0])
     for j in range(joints.body.size):
         i = 3 * joints.body[j]
+        if joints.flexible[j]:  # the balls' and the ring sectors' energy
+            energy += [_flexible_state(joints, j, x - joints.reference[j])[2] for x in position[:, i:i + 3]]
+            continue
         s_r, s_z = centre_separations(joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j],
                                       joints.contact_angle[j], position[:, i:i + 3] - joints.reference[j])
         gap = joints.centre_distance[j] - np.hypot(s_r, s_z)  # negative: the centres moved apart, a ball squeezed
@@ -199,6 +364,10 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
         rate = v[i:i + 3]
         tangent = np.zeros((3, 3))
         rate_term = np.zeros((3, 3))
+        if joints.flexible[j]:  # the tangent of the relaxed sectors; the damping's rate term is left out
+            _, tangent, _, _, _, _ = flexible_bearing_state(balls, r, a0, alpha, k, joints.modes[j], joints.sector[j],
+                                                            displacement, np.zeros((balls, joints.sector.shape[1])))
+            balls = 0
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
             b_matrix = np.array([[c, 0.0, 0.0], [0.0, 1.0, r * c]])

@@ -101,8 +101,8 @@ class SlewingBearing:
 class Distribution:
     """The state at inner-ring displacement x = (δ_r [m], δ_a [m], θ [rad]): ``load`` (F_r [N], F_a [N], M [N m])
     and its ``stiffness`` ∂load/∂x (3×3, SI); per ball and diagonal (N, 2): ``ball_loads`` Q [N] and
-    ``contact_angles`` α [rad]; ``azimuths`` ψ [rad]; with flexible rings, ``ring_displacements`` (N, 8) [m]: each
-    ball's inner-ring centres relative to the ring's rigid motion and outer-ring centres (:mod:`.flexible`)."""
+    ``contact_angles`` α [rad]; ``azimuths`` ψ [rad]; with flexible rings, ``sector_coordinates`` η (N, m): each
+    ball's ring-sector coordinates (:mod:`.flexible`)."""
 
     displacement: np.ndarray
     load: np.ndarray
@@ -110,17 +110,17 @@ class Distribution:
     ball_loads: np.ndarray
     contact_angles: np.ndarray
     azimuths: np.ndarray
-    ring_displacements: np.ndarray | None = None
+    sector_coordinates: np.ndarray | None = None
 
 
 def evaluate(bearing: SlewingBearing, displacement, rings: FlexibleRings | None = None,
-             ring_displacements=None) -> Distribution:
+             sector_coordinates=None) -> Distribution:
     """Ball loads, the bearing's load and its analytic stiffness at the inner-ring ``displacement``; rigid rings
     (the equations' one owner is :func:`bearing_mbs.elements.slewing_bearings.bearing_state`, which the force
-    element uses too) or flexible ``rings``, relaxed from ``ring_displacements`` (:func:`.flexible.flexible_state`)."""
+    element uses too) or flexible ``rings``, relaxed from ``sector_coordinates`` (:func:`.flexible.flexible_state`)."""
     x = np.array([float(v) for v in displacement])
     if rings is not None:
-        load, stiffness, ball_loads, angles, local = flexible_state(bearing, rings, x, ring_displacements)
+        load, stiffness, ball_loads, angles, local = flexible_state(bearing, rings, x, sector_coordinates)
         return Distribution(x, load, stiffness, ball_loads, angles, bearing.azimuths, local)
     load, stiffness, ball_loads, angles = bearing_state(bearing.balls, bearing.pitch_diameter / 2,
                                                         bearing.centre_distance, bearing.contact_angle,
@@ -155,7 +155,7 @@ def solve(bearing: SlewingBearing, load=(0.0, 0.0, 0.0), imposed: dict | None = 
     local = None
     for _ in range(iterations):
         state = evaluate(bearing, x, rings, local)
-        local = state.ring_displacements
+        local = state.sector_coordinates
         residual = (state.load - target)[free]
         scale = max(np.abs(target).max(), state.ball_loads.sum(), 1.0)
         if np.abs(residual).max() <= tolerance * scale:

@@ -2,7 +2,8 @@ r"""The blade-pitch scenario: a blade root carried by a slewing bearing under a 
 ``bearing-mbs run`` on either engine.
 
 One planar body in the bearing's axial plane (x radial, y axial, θ tilt) on a
-:class:`~bearing_mbs.elements.slewing_bearings.SlewingBearingJoint` to the ground; constant radial and axial
+:class:`~bearing_mbs.elements.slewing_bearings.SlewingBearingJoint` to the ground (rigid or flexible rings, as the
+scenario's ``[slewing]`` says); constant radial and axial
 loads and a tilting moment M + A sin(2πt/T), all rising from 0 along a half cosine over ``ramp_time``; gravity
 along −y. The metrics compare the motion with the quasi-static solution at the same loads, instant by instant
 (:mod:`.load_distribution`): a slow gust (T much longer than the bearing's tilt period) must be carried
@@ -22,7 +23,7 @@ from bearing_mbs.elements.slewing_bearings import SlewingBearingJoint
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.slewing_bearing.load_distribution import NotConverged, solve
 from bearing_mbs.models.slewing_bearing.spec import SlewingSpec
-from bearing_mbs.models.slewing_bearing.static import bearing_of
+from bearing_mbs.models.slewing_bearing.static import bearing_of, rings_of
 from bearing_mbs.spec import SpecError
 
 #: Samples per gust period of the moment's table profile.
@@ -51,10 +52,11 @@ def build_pitch_scene(spec: SlewingSpec) -> Scene:
     if spec.pitch is None:
         raise SpecError("pitch", None, "a [pitch] section (the blade root the bearing carries) for a run; "
                                        "`bearing-mbs slewing` solves the bearing statically")
-    bearing, pitch = bearing_of(spec), spec.pitch
+    bearing, rings, pitch = bearing_of(spec), rings_of(spec), spec.pitch
     body = Body("blade_root", pitch.blade_mass, pitch.blade_inertia, (0.0, 0.0, 0.0))
     joint = SlewingBearingJoint("pitch_bearing", 0, bearing.balls, bearing.pitch_diameter / 2, bearing.centre_distance,
-                                bearing.contact_angle, bearing.stiffness, pitch.damping, (0.0, 0.0, 0.0))
+                                bearing.contact_angle, bearing.stiffness, pitch.damping, (0.0, 0.0, 0.0),
+                                *((rings.modes, rings.sector) if rings is not None else ()))
     end = spec.scenario.end_time
     times = np.linspace(0.0, end, max(2, int(SAMPLES_PER_PERIOD * end / pitch.gust_period) + 1))
     if pitch.ramp_time > 0:
@@ -77,14 +79,14 @@ def pitch_metrics(spec: SlewingSpec, scene: Scene, result) -> dict:
     quasi-static one at the same instants' loads, their relative difference (``quasi_static_error``, of the
     mean tilt and axial displacement), and the largest difference at any compared instant relative to the
     largest quasi-static value (``quasi_static_tracking_error``)."""
-    bearing = bearing_of(spec)
+    bearing, rings = bearing_of(spec), rings_of(spec)
     window = np.flatnonzero(result.time >= result.time[-1] / 2)
     picked = window[np.linspace(0, window.size - 1, min(COMPARED_INSTANTS, window.size)).round().astype(int)]
     dynamic = result.position[picked, 0:3]
     loads = applied_loads(spec, result.time[picked])
     mean_dynamic = dynamic.mean(axis=0)
     try:
-        static = np.array([solve(bearing, load).displacement for load in loads])
+        static = np.array([solve(bearing, load, rings=rings).displacement for load in loads])
     except NotConverged:  # no quasi-static solution to compare with (too few balls to hold the ring): no errors
         static = None
     mean_static = None if static is None else static.mean(axis=0)
@@ -111,7 +113,8 @@ def pitch_figures(spec: SlewingSpec, scene: Scene, result, directory) -> list[Pa
     tilt.plot(result.time, np.degrees(result.position[:, 2]), label="run")
     sample = result.time[:: max(1, result.time.size // COMPARED_INSTANTS)]
     try:
-        static = np.array([solve(bearing_of(spec), load).displacement for load in applied_loads(spec, sample)])
+        static = np.array([solve(bearing_of(spec), load, rings=rings_of(spec)).displacement
+                           for load in applied_loads(spec, sample)])
     except NotConverged:  # nothing quasi-static to draw (pitch_metrics says so)
         static = None
     if static is not None:
@@ -121,5 +124,5 @@ def pitch_figures(spec: SlewingSpec, scene: Scene, result, directory) -> list[Pa
     tilt.set_ylabel("tilt [deg]")
     tilt.set_xlabel("time [s]")
     axial.legend()
-    axial.set_title(f"{spec.scenario.name}: blade root on the pitch bearing")
+    axial.set_title(f"{spec.scenario.name}: blade root on the pitch bearing ({spec.slewing.rings} rings)")
     return [save_figure(figure, Path(directory) / "pitch_response.png", status_note=result.status_note)]

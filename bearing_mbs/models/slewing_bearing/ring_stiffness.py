@@ -6,7 +6,8 @@ each ring (inner or outer; free, or with its bolted face clamped: "fixed") was c
 raceway curvature centres; the two tangential degrees of freedom were dropped, leaving 4×4 matrices in the
 order (r₁, a₁, r₂, a₂): radial and axial displacement of the first and the second curvature centre (an order
 inferred from the matrices' eigenvectors: the softest mode of the free inner ring is (1, 0, 1, 0), a uniform
-radial expansion, whose hoop stiffness falls as 1/D_pw²). Each entry was fitted over D_pw = 0.5…2.5 m as
+radial expansion, whose hoop stiffness falls as 1/D_pw²); node 1 is the centre of the ring's upper raceway arc,
+node 2 of its lower arc (:mod:`.flexible` gives the evidence). Each entry was fitted over D_pw = 0.5…2.5 m as
 
 .. math:: K(D_{pw}) = \left(\frac{A}{D_{pw}^2} + B\right)\cdot 10^8\ \mathrm{N/m},\qquad D_{pw}\ \text{in m}.
 

@@ -1,8 +1,8 @@
 """A ``slewing_bearing`` scenario: ``[scenario]`` (``model = "slewing_bearing"``), ``[slewing]`` and ``[load]``.
 
 ``bearing-mbs slewing`` solves it statically; ``bearing-mbs run`` simulates it when it has a ``[pitch]`` section (a
-blade root carried by the bearing under a gusting tilting moment; rigid rings). ``rings = "flexible"`` puts the
-condensed matrices of :mod:`.ring_stiffness` at every ball (:mod:`.flexible`) in the static solution.
+blade root carried by the bearing under a gusting tilting moment). ``rings = "flexible"`` puts the condensed
+matrices of :mod:`.ring_stiffness` at every ball (:mod:`.flexible`), in the static solution and in the run.
 """
 
 from __future__ import annotations
@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from bearing_mbs.models.slewing_bearing.flexible import COUPLINGS
 from bearing_mbs.models.slewing_bearing.ring_stiffness import COEFFICIENTS, MOUNTS
 from bearing_mbs.spec import Spec
 from bearing_mbs.spec.fields import finite, in_range, one_of, positive, require
@@ -24,9 +25,13 @@ class SlewingSection:
     (0.5, 1); contact_angle α₀ [deg] in (0, 90) (document 002 never states it; 45° is the usual value of
     four-point-contact slewing bearings); balls: optional, at most trunc(π D_pw/D_w) (checked by the bearing);
     youngs_modulus [Pa] and poisson_ratio of the steel rings and balls (document 002: 200 GPa, 0.3); rings
-    ``rigid`` or ``flexible`` (the condensed sector matrices), mount ``free`` or ``fixed`` (bolted face clamped) and
-    coefficients ``corrected`` or ``as_printed`` of the flexible rings (as printed, the free rings carry the
-    thesis's two errata and are not symmetric positive definite: refused with ``mount = "free"``)."""
+    ``rigid`` or ``flexible`` (the condensed sector matrices); of the flexible rings: mount ``fixed`` (both rings'
+    bolted faces clamped, the inner ring's at the bottom and the outer ring's at the top: the document's
+    validation) or ``free`` (nothing clamped), coupling ``structural`` (the rings' shared deformation only: the
+    Hertz springs carry the contacts' local one) or ``full_matrix`` (the whole matrices in series with the Hertz
+    springs: counts the local deformation twice), coefficients ``corrected`` or ``as_printed`` (as printed, the
+    free rings carry the thesis's two errata and are not symmetric positive definite: refused with
+    ``mount = "free"``)."""
 
     pitch_diameter: float
     ball_diameter: float
@@ -36,7 +41,8 @@ class SlewingSection:
     youngs_modulus: float = 200e9
     poisson_ratio: float = 0.3
     rings: str = "rigid"
-    mount: str = "free"
+    mount: str = "fixed"
+    coupling: str = "structural"
     coefficients: str = "corrected"
 
     def __post_init__(self):
@@ -53,6 +59,7 @@ class SlewingSection:
             require(isinstance(self.balls, int) and self.balls >= 1, "balls", self.balls, "an integer >= 1")
         one_of("rings", self.rings, ("rigid", "flexible"))
         one_of("mount", self.mount, MOUNTS)
+        one_of("coupling", self.coupling, COUPLINGS)
         one_of("coefficients", self.coefficients, COEFFICIENTS)
         require(not (self.coefficients == "as_printed" and self.mount == "free"), "coefficients", self.coefficients,
                 "'corrected' with mount = 'free': the printed free-ring matrices have two errata and are not symmetric "
@@ -121,8 +128,6 @@ class SlewingSpec(Spec):
         require(self.slewing is not None, "slewing", None, "a [slewing] section")
         require(self.load is not None, "load", None, "a [load] section: axial, radial, moment or axial_displacements")
         if self.pitch is not None:
-            require(self.slewing.rings == "rigid", "slewing.rings", self.slewing.rings,
-                    "'rigid' with [pitch]: the run's force element models rigid rings")
             require(not self.load.axial_displacements, "load.axial_displacements", list(self.load.axial_displacements),
                     "not with [pitch]: a run applies loads")
 

@@ -35,10 +35,24 @@ MIN_BALLS = 3
 #: (other than self-aligning) is the load at 4200 MPa, where the permanent deformation of ball and raceway is about
 #: 1e-4 of the ball diameter; beyond it the raceways yield, which the elastic model leaves out.
 MAX_CONTACT_PRESSURE = 4200e6
-UNITS = {"displacement": "m, m, rad", "load": "N, N, N m", "stiffness": "SI (N/m, N/rad, N m/m, N m/rad)",
+UNITS = {"displacement": "m, m, rad", "load": "N, N, N m", "stiffness": "each entry's own unit",
          "axial_curve": "m, N", "max_ball_load": "N", "max_contact_pressure": "Pa", "ball_loads": "N",
          "contact_angles": "deg", "azimuths": "deg", "balls": "count", "diagonal_stiffness": "N/m^1.5",
-         "rigid_axial_curve": "m, N"}
+         "rigid_axial_curve": "m, N", "rigid_ball_loads": "N", "rigid_contact_angles": "deg",
+         "finite_element_axial_curve": "m, N", "state_displacement": "m, m, rad",
+         "rigid_displacement": "m, m, rad"}
+#: The balls' diagonals d = +1, −1, for legends.
+DIAGONALS = ("inner ring's upper centre to outer ring's lower", "inner ring's lower centre to outer ring's upper")
+#: The bearing's loads and coordinates, for the names and units of the stiffness's entries ∂load/∂coordinate.
+LOADS = (("radial_force", "N"), ("axial_force", "N"), ("moment", "N m"))
+COORDINATES = (("radial", "m"), ("axial", "m"), ("tilt", "rad"))
+#: The finite-element axial curve of the thesis's validation (I. Fernández Apezteguia, bachelor's thesis, UPV/EHU
+#: 2019: a sector of inner ring, ball and outer ring in ANSYS, frictional contacts, the inner ring clamped at its
+#: bolted face and the outer ring displaced through its own; forces read as kN): displacement [m], force [N]. It
+#: belongs to the bearing of :data:`VALIDATION_BEARING` (D_pw [m], D_w [m], conformity).
+FINITE_ELEMENT_AXIAL_CURVE = tuple((0.042e-3 * n, force * 1e3) for n, force in enumerate(
+    (277, 787, 1485, 2340, 3346, 4503, 5801, 7241, 8834, 10558), start=1))
+VALIDATION_BEARING = (1.5, 0.035, 0.943)
 
 
 def bearing_of(spec: SlewingSpec) -> SlewingBearing:
@@ -53,7 +67,7 @@ def bearing_of(spec: SlewingSpec) -> SlewingBearing:
 def rings_of(spec: SlewingSpec) -> FlexibleRings | None:
     """The flexible rings of the scenario, or None for rigid rings."""
     s = spec.slewing
-    return FlexibleRings.of(s.pitch_diameter, s.mount, s.coefficients) if s.rings == "flexible" else None
+    return FlexibleRings.of(s.pitch_diameter, s.mount, s.coefficients, s.coupling) if s.rings == "flexible" else None
 
 
 def engineering_deflection(axial_load: float, pitch_diameter: float) -> float:
@@ -84,7 +98,7 @@ def slewing_summary(spec: SlewingSpec) -> tuple[dict, list[Distribution]]:
     summary = {"scenario": spec.scenario.name, "balls": bearing.balls, "diagonal_stiffness": bearing.stiffness,
                "rings": spec.slewing.rings}
     if rings is not None:
-        summary["mount"] = spec.slewing.mount
+        summary["mount"], summary["coupling"] = spec.slewing.mount, spec.slewing.coupling
     count = lower_bound("ball_count", bearing.balls, MIN_BALLS, "count",
                         f"{bearing.balls} ball(s) cannot hold the ring: it tilts freely about the line through them. "
                         f"Likely fix: slewing.balls >= {MIN_BALLS} (or leave it out: as many as fit, "
@@ -135,11 +149,20 @@ def _solve(spec: SlewingSpec, bearing: SlewingBearing, rings, summary: dict) -> 
     summary.update({
         "max_ball_load": float(last.ball_loads.max()),
         "max_contact_pressure": pressure,
-        "stiffness": last.stiffness.tolist(),
+        "state_displacement": last.displacement.tolist(),
+        "stiffness": named_stiffness(last.stiffness),
         "azimuths": np.degrees(last.azimuths).tolist(),
         "ball_loads": last.ball_loads.tolist(),
         "contact_angles": np.degrees(last.contact_angles).tolist(),
     })
+    if rings is not None:  # the rigid rings beside: at the same displacement on a curve, at the same load otherwise
+        rigid = (solve(bearing, imposed=dict(zip(("radial", "axial", "tilt"), last.displacement)))
+                 if load.axial_displacements else solve(bearing, target))
+        summary["rigid_displacement"] = rigid.displacement.tolist()
+        summary["rigid_ball_loads"] = rigid.ball_loads.tolist()
+        summary["rigid_contact_angles"] = np.degrees(rigid.contact_angles).tolist()
+    if load.axial_displacements and is_validation_bearing(spec):
+        summary["finite_element_axial_curve"] = [list(point) for point in FINITE_ELEMENT_AXIAL_CURVE]
     ratio = MAX_CONTACT_PRESSURE / pressure if pressure > 0 else 1.0
     # Hertz: p ∝ Q^(1/3) and Q ∝ δ^(3/2), so p ∝ δ^(1/2)
     fix = (f"load.axial_displacements up to about {ratio ** 2 * max(load.axial_displacements):.3g} m"
@@ -151,6 +174,19 @@ def _solve(spec: SlewingSpec, bearing: SlewingBearing, rings, summary: dict) -> 
     return checks, states
 
 
+def named_stiffness(stiffness: np.ndarray) -> dict:
+    """The 3×3 stiffness ∂load/∂coordinate as named entries, each with its value and unit."""
+    return {f"d_{load}/d_{coordinate}": {"value": float(stiffness[i, j]), "unit": f"{load_unit}/{unit}"}
+            for i, (load, load_unit) in enumerate(LOADS) for j, (coordinate, unit) in enumerate(COORDINATES)}
+
+
+def is_validation_bearing(spec: SlewingSpec) -> bool:
+    """Whether the scenario's bearing is the one of the thesis's finite-element validation."""
+    s = spec.slewing
+    return all(math.isclose(a, b, rel_tol=1e-9) for a, b in zip((s.pitch_diameter, s.ball_diameter, s.conformity),
+                                                                 VALIDATION_BEARING))
+
+
 def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True) -> dict:
     """Solve the scenario and write ``summary.json`` (and the figures) to ``directory``."""
     directory = Path(directory)
@@ -159,43 +195,69 @@ def write_slewing(spec: SlewingSpec, directory: str | Path, figures: bool = True
     write_json(directory / SUMMARY_FILE, summary)
     if figures and states:
         note = status_note(summary)
-        _plot_around_the_ring(spec, states[-1], directory / "ball_loads.png", note)
+        _plot_around_the_ring(spec, summary, directory / "ball_loads.png", note)
         if spec.load.axial_displacements:
-            _plot_curve(spec, summary["axial_curve"], directory / "axial_curve.png", summary.get("rigid_axial_curve"),
-                        note)
+            _plot_curve(spec, summary, directory / "axial_curve.png", note)
     return summary
 
 
-def _plot_around_the_ring(spec, state, path, note=None):
-    figure, (loads, angles) = new_figure(2, 1, figsize=(7, 6), sharex=True)
-    azimuth = np.degrees(state.azimuths)
-    for d, label in enumerate(("diagonal 1", "diagonal 2")):
-        loads.plot(azimuth, state.ball_loads[:, d] / 1e3, ".-", label=label)
-        loaded = state.ball_loads[:, d] > 0
-        angles.plot(azimuth[loaded], np.degrees(state.contact_angles[loaded, d]), ".", label=label)
+def rings_label(spec: SlewingSpec) -> str:
+    """What the scenario's rings are, for a legend."""
+    s = spec.slewing
+    if s.rings == "rigid":
+        return "rigid rings"
+    mount = "bolted faces clamped" if s.mount == "fixed" else "free rings, nothing clamped"
+    coupling = "shared ring deformation" if s.coupling == "structural" else "whole sector matrices in series"
+    return f"flexible rings ({mount}; {coupling})"
+
+
+def _plot_around_the_ring(spec, summary, path, note=None):
+    figure, (loads, angles) = new_figure(2, 1, figsize=(8, 7.5), sharex=True)
+    azimuth = np.array(summary["azimuths"])
+    shown = [(summary["ball_loads"], summary["contact_angles"], rings_label(spec), "-")]
+    if "rigid_ball_loads" in summary:
+        shown.append((summary["rigid_ball_loads"], summary["rigid_contact_angles"], "rigid rings", ":"))
+    for ball_loads, contact_angles, label, style in shown:
+        ball_loads, contact_angles = np.array(ball_loads), np.array(contact_angles)
+        for d, diagonal in enumerate(DIAGONALS):
+            line, = loads.plot(azimuth, ball_loads[:, d] / 1e3, "." + style, label=f"{label}: {diagonal}")
+            loaded = ball_loads[:, d] > 0
+            angles.plot(azimuth[loaded], contact_angles[loaded, d], ".", color=line.get_color())
     loads.set_ylabel("ball load [kN]")
     angles.set_ylabel("contact angle [deg]")
     angles.set_xlabel("azimuth ψ [deg] (0 along +x)")
-    loads.legend()
-    loads.set_title(f"{spec.scenario.name}: {state.ball_loads.shape[0]} balls, {spec.slewing.rings} rings")
-    return save_figure(figure, path, status_note=note)
+    figure.legend(*loads.get_legend_handles_labels(), loc="lower center", ncol=1, fontsize=7)
+    radial, axial, tilt = summary["state_displacement"]
+    load = spec.load
+    where = (f"δ_r = {radial * 1e3:.4g} mm, δ_a = {axial * 1e3:.4g} mm, θ = {tilt * 1e3:.4g} mrad"
+             if "axial_curve" in summary else
+             f"F_r = {load.radial / 1e3:.4g} kN, F_a = {load.axial / 1e3:.4g} kN, M = {load.moment / 1e3:.4g} kN m")
+    loads.set_title(f"{spec.scenario.name}: {azimuth.size} balls at {where}", fontsize=9)
+    figure.tight_layout(rect=(0, 0.14, 1, 1))
+    return save_figure(figure, path, status_note=note, tight=False)
 
 
-def _plot_curve(spec, curve, path, rigid_curve=None, note=None):
-    displacement, force = np.array(curve).T
-    figure, axis = new_figure(figsize=(7, 5))
-    axis.plot(displacement * 1e3, force / 1e3, "o-", label=f"{spec.slewing.rings} rings (this model)")
+def _plot_curve(spec, summary, path, note=None):
+    displacement, force = np.array(summary["axial_curve"]).T
+    figure, axis = new_figure(figsize=(8, 5.5))
+    axis.plot(displacement * 1e3, force / 1e3, "o-", label=f"this model, {rings_label(spec)}")
+    rigid_curve = summary.get("rigid_axial_curve")
     if rigid_curve is not None:
-        axis.plot(*(np.array(rigid_curve).T * [[1e3], [1e-3]]), "s--", label="rigid rings (this model)")
+        axis.plot(*(np.array(rigid_curve).T * [[1e3], [1e-3]]), "s--", label="this model, rigid rings")
     base_displacement, base_force = (displacement, force) if rigid_curve is None else np.array(rigid_curve).T
     engineering = [engineering_deflection(f, spec.slewing.pitch_diameter) + d
                    for d, f in zip(base_displacement, base_force)]
     axis.plot(np.array(engineering) * 1e3, base_force / 1e3, "--",
-              label="rigid rings + ring deflection of the engineering formula (3)")
-    axis.set_xlabel("axial displacement [mm]")
+              label="rigid rings + the ADM group's engineering formula for the rings' deflection "
+                    "(with bolted joints)")
+    if "finite_element_axial_curve" in summary:
+        fe_displacement, fe_force = np.array(summary["finite_element_axial_curve"]).T
+        axis.plot(fe_displacement * 1e3, fe_force / 1e3, "k^", label="finite-element model of a ball's sector, "
+                                                                     "both rings clamped (Fernández Apezteguia 2019)")
+    axis.set_xlabel("axial displacement of the inner ring against the outer ring [mm]")
     axis.set_ylabel("axial force [kN]")
     axis.grid(True, alpha=0.3)
-    axis.legend()
+    axis.legend(fontsize=7)
     axis.set_title(f"{spec.scenario.name}: D_pw = {spec.slewing.pitch_diameter:g} m, α₀ = "
                    f"{math.degrees(spec.contact_angle_rad):g}°")
     return save_figure(figure, path, status_note=note)
