@@ -114,19 +114,14 @@ def _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope):
     return their energy Σ K δ^{5/2}/(5/2) [J]."""
     energy = 0.0
     for n in range(2):
-        d = 1.0 - 2.0 * n
-        s_r = a0 * math.cos(alpha) + w_r
-        s_z = d * a0 * math.sin(alpha) + w_z
+        offset_r, offset_z = w_r, w_z
         for i in range(eta.size):
-            s_r += modes[n, 0, i] * eta[i]
-            s_z += modes[n, 1, i] * eta[i]
-        s[n, 0], s[n, 1] = s_r, s_z
-        approach = math.sqrt(s_r * s_r + s_z * s_z) - a0
-        if approach > 0.0:
-            load[n], slope[n] = k * approach**1.5, 1.5 * k * math.sqrt(approach)
-            energy += k * approach**2.5 / 2.5
-        else:
-            load[n] = slope[n] = 0.0
+            offset_r += modes[n, 0, i] * eta[i]
+            offset_z += modes[n, 1, i] * eta[i]
+        s[n, 0], s[n, 1], _, load[n], slope[n] = diagonal(a0, alpha, 0.0, 1.0, 1.0 - 2.0 * n, offset_r, offset_z,
+                                                           0.0, k)
+        if load[n] > 0.0:
+            energy += load[n] * (load[n] / k) ** (2.0 / 3.0) / 2.5  # K δ^{5/2}/(5/2) with δ = (Q/K)^{2/3}
     return energy
 
 
