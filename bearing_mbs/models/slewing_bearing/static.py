@@ -229,9 +229,10 @@ def _plot_around_the_ring(spec, summary, path, note=None):
     figure.legend(*loads.get_legend_handles_labels(), loc="lower center", ncol=1, fontsize=7)
     radial, axial, tilt = summary["state_displacement"]
     load = spec.load
-    where = (f"δ_r = {radial * 1e3:.4g} mm, δ_a = {axial * 1e3:.4g} mm, θ = {tilt * 1e3:.4g} mrad"
-             if "axial_curve" in summary else
-             f"F_r = {load.radial / 1e3:.4g} kN, F_a = {load.axial / 1e3:.4g} kN, M = {load.moment / 1e3:.4g} kN m")
+    where = f"δ_r = {radial * 1e3:.4g} mm, δ_a = {axial * 1e3:.4g} mm, θ = {tilt * 1e3:.4g} mrad"
+    if "axial_curve" not in summary:
+        where = (f"F_r = {load.radial / 1e3:.4g} kN, F_a = {load.axial / 1e3:.4g} kN, M = {load.moment / 1e3:.4g} kN m"
+                 f"\n({spec.slewing.rings} rings at {where})")
     loads.set_title(f"{spec.scenario.name}: {azimuth.size} balls at {where}", fontsize=9)
     figure.tight_layout(rect=(0, 0.14, 1, 1))
     return save_figure(figure, path, status_note=note, tight=False)
