@@ -137,6 +137,62 @@ def _derivatives(s, load, slope, derivative):
 
 
 @numba.njit(cache=True)
+def _quadratic(matrix, x):
+    """½ xᵀ A x."""
+    total = 0.0
+    for i in range(x.size):
+        for j in range(x.size):
+            total += x[i] * matrix[i, j] * x[j]
+    return 0.5 * total
+
+
+@numba.njit(cache=True)
+def _cholesky_solve(matrix, right):
+    """Solve A X = B in place of B (m, r) for a small symmetric positive definite A (m, m), by Cholesky: loops, not
+    LAPACK (the kernel is part of every compiled driver, and numba compiles LAPACK's bindings slowly)."""
+    m = matrix.shape[0]
+    lower = np.zeros((m, m))
+    for i in range(m):
+        for j in range(i + 1):
+            total = matrix[i, j]
+            for p in range(j):
+                total -= lower[i, p] * lower[j, p]
+            lower[i, j] = math.sqrt(total) if i == j else total / lower[j, j]
+    for c in range(right.shape[1]):
+        for i in range(m):
+            total = right[i, c]
+            for p in range(i):
+                total -= lower[i, p] * right[p, c]
+            right[i, c] = total / lower[i, i]
+        for i in range(m - 1, -1, -1):
+            total = right[i, c]
+            for p in range(i + 1, m):
+                total -= lower[p, i] * right[p, c]
+            right[i, c] = total / lower[i, i]
+
+
+@numba.njit(cache=True)
+def _gradient_and_hessian(modes, sector, eta, load, s, derivative, gradient, hessian):
+    """g = K_η η + Σ_d M_dᵀ Q_d ŝ_d and H = K_η + Σ_d M_dᵀ D_d M_d of the loaded diagonals."""
+    m = eta.size
+    for i in range(m):
+        gradient[i] = 0.0
+        for j in range(m):
+            gradient[i] += sector[i, j] * eta[j]
+            hessian[i, j] = sector[i, j]
+    for n in range(2):
+        if load[n] <= 0.0:
+            continue
+        length = math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2)
+        for i in range(m):
+            gradient[i] += load[n] * (modes[n, 0, i] * s[n, 0] + modes[n, 1, i] * s[n, 1]) / length
+            for j in range(m):
+                for a in range(2):
+                    for b in range(2):
+                        hessian[i, j] += modes[n, a, i] * derivative[n, a, b] * modes[n, b, j]
+
+
+@numba.njit(cache=True)
 def ball_state(a0, alpha, k, w_r, w_z, modes, sector, eta, force, tangent, load, s):
     """One ball at rigid offset w = (w_r, w_z) [m] (module docstring): relax its sector coordinates ``eta`` (m,) in
     place from their value (Newton's method on the convex energy, halving a step that raises it), and fill
@@ -145,46 +201,49 @@ def ball_state(a0, alpha, k, w_r, w_z, modes, sector, eta, force, tangent, load,
     m = eta.size
     slope = np.zeros(2)
     derivative = np.zeros((2, 2, 2))
-    energy = _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope)
+    gradient, hessian, step, previous = np.zeros(m), np.zeros((m, m)), np.zeros((m, 1)), np.zeros(m)
+    energy = _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope) + _quadratic(sector, eta)
     _derivatives(s, load, slope, derivative)
     converged = True
-    hessian = np.eye(max(m, 1))
-    if m > 0:
-        energy += 0.5 * eta @ sector @ eta
-        for iteration in range(RELAX_ITERATIONS + 1):
-            gradient = sector @ eta
-            hessian = sector.copy()
-            for n in range(2):
-                if load[n] > 0.0:
-                    gradient += modes[n].T @ (load[n] * s[n] / math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2))
-                    hessian += modes[n].T @ derivative[n] @ modes[n]
-            if np.abs(gradient).max() <= RELAX_TOLERANCE * max(load[0], load[1], 1.0):
+    for iteration in range(RELAX_ITERATIONS + 1 if m > 0 else 0):
+        _gradient_and_hessian(modes, sector, eta, load, s, derivative, gradient, hessian)
+        if np.abs(gradient).max() <= RELAX_TOLERANCE * max(load[0], load[1], 1.0):
+            break
+        if iteration == RELAX_ITERATIONS:
+            converged = False
+            break
+        step[:, 0] = -gradient
+        _cholesky_solve(hessian, step)
+        previous[:] = eta
+        factor = 1.0
+        while True:
+            eta[:] = previous + factor * step[:, 0]
+            trial = _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope) + _quadratic(sector, eta)
+            if trial <= energy + ENERGY_ROUND_OFF * abs(energy) or factor < 1e-6:
+                energy = trial
                 break
-            if iteration == RELAX_ITERATIONS:
-                converged = False
-                break
-            step = np.linalg.solve(hessian, -gradient)
-            previous = eta.copy()
-            factor = 1.0
-            while True:
-                eta[:] = previous + factor * step
-                trial = 0.5 * eta @ sector @ eta + _separations(a0, alpha, k, w_r, w_z, modes, eta, s, load, slope)
-                if trial <= energy + ENERGY_ROUND_OFF * abs(energy) or factor < 1e-6:
-                    energy = trial
-                    break
-                factor *= 0.5
-            _derivatives(s, load, slope, derivative)
+            factor *= 0.5
+        _derivatives(s, load, slope, derivative)
     force[:] = 0.0
     tangent[:] = 0.0
-    coupling = np.zeros((2, m))
+    coupling = np.zeros((m, 2))  # (Σ D_d M_d)ᵀ
     for n in range(2):
-        if load[n] > 0.0:
-            force += load[n] * s[n] / math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2)
-            tangent += derivative[n]
-            if m > 0:
-                coupling += derivative[n] @ modes[n]
-    if m > 0:
-        tangent -= coupling @ np.linalg.solve(hessian, np.ascontiguousarray(coupling.T))
+        if load[n] <= 0.0:
+            continue
+        length = math.sqrt(s[n, 0] ** 2 + s[n, 1] ** 2)
+        for a in range(2):
+            force[a] += load[n] * s[n, a] / length
+            for b in range(2):
+                tangent[a, b] += derivative[n, a, b]
+                for i in range(m):
+                    coupling[i, a] += derivative[n, a, b] * modes[n, b, i]
+    if m > 0:  # the Hessian is the last iterate's
+        relief = coupling.copy()
+        _cholesky_solve(hessian, relief)
+        for a in range(2):
+            for b in range(2):
+                for i in range(m):
+                    tangent[a, b] -= coupling[i, a] * relief[i, b]
     return energy, converged
 
 
@@ -192,24 +251,25 @@ def ball_state(a0, alpha, k, w_r, w_z, modes, sector, eta, force, tangent, load,
 def flexible_bearing_state(balls, pitch_radius, a0, alpha, k, modes, sector, displacement, eta):
     """All balls at the inner ring's ``displacement`` (3,), their sector coordinates ``eta`` (N, m) relaxed in place:
     (load (3,) [N, N, N m], tangent (3, 3), loads Q (N, 2) [N], separations s (N, 2, 2) [m], energy [J], every ball
-    converged)."""
+    converged). Ball j's offset is w = B x with B = [[c, 0, 0], [0, 1, R c]], c = cos ψ_j."""
     load = np.zeros(3)
     tangent = np.zeros((3, 3))
     loads = np.zeros((balls, 2))
     separations = np.zeros((balls, 2, 2))
     force, ball_tangent = np.zeros(2), np.zeros((2, 2))
-    b = np.zeros((2, 3))
     energy, converged = 0.0, True
     for n in range(balls):
         c = math.cos(2.0 * math.pi * n / balls)
-        b[0, 0], b[1, 1], b[1, 2] = c, 1.0, pitch_radius * c
-        w = b @ displacement
-        ball_energy, ok = ball_state(a0, alpha, k, w[0], w[1], modes, sector, eta[n], force, ball_tangent,
-                                     loads[n], separations[n])
+        ball_energy, ok = ball_state(a0, alpha, k, displacement[0] * c,
+                                     displacement[1] + displacement[2] * pitch_radius * c, modes, sector, eta[n],
+                                     force, ball_tangent, loads[n], separations[n])
         energy += ball_energy
         converged = converged and ok
-        load += b.T @ force
-        tangent += b.T @ ball_tangent @ b
+        rows = ((0, c), (1, 1.0), (1, pitch_radius * c))  # B's non-zero entry of each column: (row, value)
+        for i in range(3):
+            load[i] += rows[i][1] * force[rows[i][0]]
+            for j in range(3):
+                tangent[i, j] += rows[i][1] * ball_tangent[rows[i][0], rows[j][0]] * rows[j][1]
     return load, tangent, loads, separations, energy, converged
 
 

@@ -30,6 +30,12 @@ def capillary_resistance(length: float, diameter: float, viscosity: float) -> fl
     return 128.0 * length * viscosity / (math.pi * diameter**4)
 
 
+def capillary_bore(length: float, flow: float, drop: float, viscosity: float) -> float:
+    """d = (128 l μ q / (π Δp))^{1/4} [m]: the bore of a capillary l [m] long that passes q [m³/s] at the drop Δp
+    [Pa] (the inverse of :func:`capillary_resistance`)."""
+    return (128.0 * length * viscosity * flow / (math.pi * drop)) ** 0.25
+
+
 def capillary_reynolds(flow: float, diameter: float, viscosity: float, density: float) -> float:
     """Re = 4ρq/(πμd) of the flow q [m³/s] through a tube of bore d [m]."""
     return 4.0 * density * abs(flow) / (math.pi * viscosity * diameter)
@@ -56,6 +62,11 @@ class Capillary:
         resistance = capillary_resistance(self.length, self.diameter, viscosity)
         return (supply - pressure) / resistance, -1.0 / resistance
 
+    @classmethod
+    def passing(cls, flow: float, drop: float, viscosity: float, length: float) -> Capillary:
+        """The capillary of this ``length`` [m] that passes ``flow`` [m³/s] at the pressure ``drop`` [Pa]."""
+        return cls(length, capillary_bore(length, flow, drop, viscosity))
+
 
 @dataclass(frozen=True)
 class Orifice:
@@ -79,6 +90,13 @@ class Orifice:
         root = math.sqrt(max(abs(drop), floor))
         flow = area * math.copysign(math.sqrt(2 * abs(drop) / density), drop)
         return flow, -area * math.sqrt(2 / density) / (2 * root)
+
+    @classmethod
+    def passing(cls, flow: float, drop: float, density: float, discharge_coefficient: float = 0.6) -> Orifice:
+        """The orifice that passes ``flow`` [m³/s] at the pressure ``drop`` [Pa]: q = C_d (π d²/4) √(2Δp/ρ)
+        solved for d."""
+        area = flow / (discharge_coefficient * math.sqrt(2 * drop / density))
+        return cls(math.sqrt(4 * area / math.pi), discharge_coefficient)
 
 
 @dataclass(frozen=True)

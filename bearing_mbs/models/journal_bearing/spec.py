@@ -6,8 +6,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from bearing_mbs.fluid_film.design import recess_outflow
 from bearing_mbs.fluid_film.journal import MAX_CELLS, FilmGrid, JournalBearing, Recesses
-from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS
+from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS, capillary_bore
 from bearing_mbs.fluid_film.reynolds import CAVITATION
 from bearing_mbs.spec import Spec
 from bearing_mbs.spec.fields import in_range, non_negative, one_of, positive, require
@@ -18,6 +19,8 @@ MODEL_NAME = "journal_bearing"
 #: What each restrictor needs besides the supply pressure.
 RESTRICTOR_KEYS = {"capillary": ("capillary_length", "capillary_diameter"), "orifice": ("orifice_diameter",),
                    "constant_flow": ("flow",), "none": ()}
+#: The bore a design pressure ratio sizes, by restrictor.
+SIZED_BORE = {"capillary": "capillary_diameter", "orifice": "orifice_diameter"}
 
 
 @dataclass(frozen=True)
@@ -27,7 +30,9 @@ class RecessSection:
     centred at first_angle [deg]; supply_pressure [Pa] >= 0 through a restrictor: ``capillary``
     (capillary_length, capillary_diameter [m], at least 20 bores long), ``orifice`` (orifice_diameter [m],
     discharge_coefficient in (0, 1]), ``constant_flow`` (flow [m³/s] per recess) or ``none`` (the recess is held at
-    the supply pressure: a supply groove)."""
+    the supply pressure: a supply groove); design_pressure_ratio β in (0, 1), optional, with a capillary or an
+    orifice: its bore is then sized so that the centred recesses sit at β × supply_pressure
+    (:mod:`bearing_mbs.fluid_film.design`), and capillary_diameter or orifice_diameter must be left out."""
 
     count: int
     angular_width: float
@@ -41,6 +46,7 @@ class RecessSection:
     orifice_diameter: float | None = None
     discharge_coefficient: float = 0.6
     flow: float | None = None
+    design_pressure_ratio: float | None = None
 
     def __post_init__(self):
         require(isinstance(self.count, int) and self.count >= 1, "count", self.count, "an integer >= 1")
@@ -51,11 +57,21 @@ class RecessSection:
         non_negative("supply_pressure", self.supply_pressure)
         one_of("restrictor", self.restrictor, tuple(RESTRICTORS))
         in_range("first_angle", self.first_angle, -360.0, 360.0, "deg")
+        sized = None
+        if self.design_pressure_ratio is not None:
+            in_range("design_pressure_ratio", self.design_pressure_ratio, 0.0, 1.0, "-", low_open=True, high_open=True)
+            require(self.restrictor in SIZED_BORE, "design_pressure_ratio", self.design_pressure_ratio,
+                    f"only with restrictor = 'capillary' or 'orifice' (here {self.restrictor!r})")
+            sized = SIZED_BORE[self.restrictor]
+            require(getattr(self, sized) is None, sized, getattr(self, sized),
+                    "left out with design_pressure_ratio: the bore is sized for it")
         for name in RESTRICTOR_KEYS[self.restrictor]:
+            if name == sized:
+                continue
             require(getattr(self, name) is not None, name, None, f"required by restrictor = {self.restrictor!r}")
             positive(name, getattr(self, name))
         in_range("discharge_coefficient", self.discharge_coefficient, 0.0, 1.0, "-", low_open=True)
-        if self.restrictor == "capillary":
+        if self.restrictor == "capillary" and sized is None:
             require(self.capillary_length >= CAPILLARY_MIN_ASPECT * self.capillary_diameter, "capillary_length",
                     self.capillary_length, f">= {CAPILLARY_MIN_ASPECT:g} × capillary_diameter = "
                     f"{CAPILLARY_MIN_ASPECT * self.capillary_diameter:g} m (laminar, developed flow)")
@@ -101,6 +117,8 @@ class JournalSection:
             require(self.recesses.axial_length <= self.length, "recesses.axial_length", self.recesses.axial_length,
                     f"<= length = {self.length:g} m")
             self._check_recesses_resolved()
+            if self.recesses.design_pressure_ratio is not None and self.recesses.restrictor == "capillary":
+                self._check_sized_capillary()
         if self.cavitation == "jfo":
             r = self.recesses
             require(r is not None and (r.restrictor in ("none", "constant_flow") or r.supply_pressure > 0), "cavitation",
@@ -110,17 +128,32 @@ class JournalSection:
                     "alike; give [journal.recesses] with supply_pressure > 0, a constant flow, or a supply groove "
                     "(restrictor = 'none', 0 Pa for an ambient groove)")
 
+    def bearing(self) -> JournalBearing:
+        """The bore and its recesses (without their supply)."""
+        r = self.recesses
+        return JournalBearing(self.diameter, self.length, self.radial_clearance, self.viscosity, self.density,
+                              None if r is None else Recesses(r.count, r.angular_width, r.axial_length, r.depth,
+                                                              r.first_angle))
+
     def _check_recesses_resolved(self):
         """Every recess holds a cell centre of the grid (a recess of no cell has no balance: a singular system)."""
         r = self.recesses
-        bearing = JournalBearing(self.diameter, self.length, self.radial_clearance, self.viscosity, self.density,
-                                 Recesses(r.count, r.angular_width, r.axial_length, r.depth, r.first_angle))
-        empty = [k + 1 for k, area in enumerate(FilmGrid.build(bearing, *self.grid).recess_areas) if area == 0]
+        empty = [k + 1 for k, area in enumerate(FilmGrid.build(self.bearing(), *self.grid).recess_areas) if area == 0]
         n_theta, n_z = self.grid
         require(not empty, "grid", list(self.grid),
                 f"cells fine enough that every recess holds a cell centre: recess {empty[0] if empty else ''} "
                 f"({r.angular_width:g} deg × {r.axial_length:g} m) holds none of the cells of {360 / n_theta:g} deg × "
                 f"{self.length / n_z:g} m; refine the grid")
+
+    def _check_sized_capillary(self):
+        """The capillary sized for the design pressure ratio is long enough for laminar, developed flow."""
+        r = self.recesses
+        flow = recess_outflow(self.bearing(), r.design_pressure_ratio * r.supply_pressure, self.grid)
+        bore = capillary_bore(r.capillary_length, flow, (1 - r.design_pressure_ratio) * r.supply_pressure,
+                              self.viscosity)
+        require(r.capillary_length >= CAPILLARY_MIN_ASPECT * bore, "recesses.design_pressure_ratio",
+                r.design_pressure_ratio, f"a ratio whose capillary (bore {bore:g} m) is at least {CAPILLARY_MIN_ASPECT:g} "
+                f"bores long: a capillary_length >= {CAPILLARY_MIN_ASPECT * bore:g} m, or another ratio")
 
     @property
     def speed(self) -> float:

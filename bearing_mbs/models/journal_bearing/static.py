@@ -17,7 +17,8 @@ import numpy as np
 
 from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
-from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
+from bearing_mbs.fluid_film.design import sized_capillary, sized_orifice
+from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
 from bearing_mbs.fluid_film.network import network_recess_pressures
 from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply, Orifice, capillary_resistance
 from bearing_mbs.fluid_film.reynolds import FilmNotConverged, FilmSolution, JournalState, Supply, solve_film
@@ -29,7 +30,7 @@ from bearing_mbs.models.journal_bearing.checks import (
     mass_balance_error,
     taylor_number,
 )
-from bearing_mbs.models.journal_bearing.spec import JournalSpec
+from bearing_mbs.models.journal_bearing.spec import SIZED_BORE, JournalSpec
 
 SUMMARY_FILE = "summary.json"
 #: Eccentricity ratios of the load curve.
@@ -39,15 +40,21 @@ UNITS = {"load_capacity": "N", "force": "N", "attitude_angle": "deg", "flow": "m
          "damping": "N s/m", "static_stiffness": "N/m", "static_stiffness_per_eccentricity_ratio": "N",
          "min_film_thickness": "m", "max_pressure": "Pa", "load_curve": "-, N, N/m",
          "network_recess_pressures": "Pa", "network_difference": "-", "mass_balance_error": "-",
-         "recess_areas": "m^2", "capillary_reynolds": "-", "taylor_number": "-"}
+         "recess_areas": "m^2", "capillary_reynolds": "-", "taylor_number": "-", "design_pressure_ratio": "-",
+         "sized_bore": "m"}
 
 
 def bearing_of(spec: JournalSpec) -> tuple[JournalBearing, Supply | None]:
     j, r = spec.journal, spec.journal.recesses
-    recesses = None if r is None else Recesses(r.count, r.angular_width, r.axial_length, r.depth, r.first_angle)
-    bearing = JournalBearing(j.diameter, j.length, j.radial_clearance, j.viscosity, j.density, recesses)
+    bearing = j.bearing()
     if r is None:
         return bearing, None
+    if r.design_pressure_ratio is not None:
+        restrictor = (sized_capillary(bearing, r.supply_pressure, r.design_pressure_ratio, r.capillary_length, j.grid)
+                      if r.restrictor == "capillary" else
+                      sized_orifice(bearing, r.supply_pressure, r.design_pressure_ratio, r.discharge_coefficient,
+                                    j.grid))
+        return bearing, Supply(r.supply_pressure, restrictor)
     restrictor = {"capillary": lambda: Capillary(r.capillary_length, r.capillary_diameter),
                   "orifice": lambda: Orifice(r.orifice_diameter, r.discharge_coefficient),
                   "constant_flow": lambda: ConstantFlow(r.flow), "none": DirectSupply}[r.restrictor]()
@@ -96,6 +103,9 @@ def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
         "load_curve": [list(row) for row in curve],
         "taylor_number": taylor_number(j),
     }
+    if j.recesses is not None and j.recesses.design_pressure_ratio is not None:
+        summary["design_pressure_ratio"] = j.recesses.design_pressure_ratio
+        summary["sized_bore"] = {SIZED_BORE[j.recesses.restrictor]: supply.restrictor.diameter}
     reynolds = largest_capillary_reynolds(j, film, supply)
     if reynolds is not None:
         summary["capillary_reynolds"] = reynolds
