@@ -4,7 +4,8 @@ name, never a traceback (tests/no_traceback.py says what is checked).
 Drawn over the documented range of every key (docs/scenario-format.md, "Journal-bearing scenarios", and
 bearing_mbs/models/journal_bearing/spec.py): the bore's diameter and length, the radial clearance up to D/2, the
 viscosity and density, speeds from −1e6 to 1e6 rpm (0: hydrostatic), ε in [0, 1) up to 1 − 1e-9, any attitude,
-both cavitation models, plain journals and recessed ones of 1 to 12 recesses with every restrictor. The grid is
+both cavitation models, plain journals and recessed ones of 1 to 12 recesses with every restrictor (a
+capillary's or orifice's bore given, or sized for a design pressure ratio). The grid is
 drawn small (4 to 40 cells around, 4 to 16 along: each solve then takes milliseconds); coarse grids are valid input.
 """
 
@@ -48,6 +49,9 @@ def recesses(draw, length: float, grid: list[int], source: bool) -> dict:
                      discharge_coefficient=draw(uniform(0.0, 1.0, low_open=True)))
     elif restrictor == "constant_flow":
         table["flow"] = draw(log_uniform(1e-10, 1e-2))
+    if restrictor in ("capillary", "orifice") and draw(st.integers(0, 3)) == 0:  # the bore sized for a ratio instead
+        del table[f"{restrictor}_diameter"]
+        table["design_pressure_ratio"] = draw(uniform(0.0, 1.0, low_open=True, high_open=True))
     return table
 
 

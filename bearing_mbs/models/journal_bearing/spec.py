@@ -62,6 +62,8 @@ class RecessSection:
             in_range("design_pressure_ratio", self.design_pressure_ratio, 0.0, 1.0, "-", low_open=True, high_open=True)
             require(self.restrictor in SIZED_BORE, "design_pressure_ratio", self.design_pressure_ratio,
                     f"only with restrictor = 'capillary' or 'orifice' (here {self.restrictor!r})")
+            require(self.supply_pressure > 0, "design_pressure_ratio", self.design_pressure_ratio,
+                    "only with supply_pressure > 0 (a ratio of nothing sizes nothing)")
             sized = SIZED_BORE[self.restrictor]
             require(getattr(self, sized) is None, sized, getattr(self, sized),
                     "left out with design_pressure_ratio: the bore is sized for it")
