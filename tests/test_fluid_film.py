@@ -110,6 +110,17 @@ def test_raimondi_and_boyd_full_bearing(slenderness):
         assert film.attitude_angle == pytest.approx(attitude, abs=1.0), eps
 
 
+def test_a_mass_conserving_film_without_an_oil_source_is_refused():
+    """A plain bore (or recesses fed through restrictors from 0 Pa) has no oil source: the mass-conserving film would
+    starve to a load of about 1e-10 N; it is refused (ValueError) instead of returned."""
+    plain = JournalBearing(D, D, 35e-6, MU, RHO)
+    with pytest.raises(ValueError):
+        solve_film(plain, JournalState((0.6 * 35e-6, 0.0), speed=OMEGA), cavitation="jfo")
+    with pytest.raises(ValueError):
+        solve_film(seed_bearing(), JournalState((0.6 * 35e-6, 0.0), speed=OMEGA), Supply(0.0, SEED_CAPILLARY),
+                   cavitation="jfo")
+
+
 @pytest.mark.parametrize("cavitation", ["gumbel", "jfo"])
 @pytest.mark.parametrize("speed", [0.0, OMEGA])
 @pytest.mark.parametrize("restrictor", [SEED_CAPILLARY, Orifice(0.00045, 0.6), ConstantFlow(5e-6)])

@@ -218,6 +218,10 @@ def solve_film(bearing: JournalBearing, state: JournalState, supply: Supply | No
                          f"{bearing.radial_clearance:g} m (eccentricity ratio < 1)")
     if grid.recess_count and supply is None:
         raise ValueError("supply = None: a bearing with recesses needs a supply pressure and restrictor")
+    if cavitation == "jfo" and not _has_oil_source(grid, supply):
+        raise ValueError("cavitation = 'jfo': the mass-conserving film needs an oil source (recesses fed from a supply "
+                         "pressure > 0, a constant flow, or a supply groove held at its pressure); without one every "
+                         "cavitated film with ϑh constant along the bore solves it (a starved bearing carries nothing)")
     balance = _assemble(grid, state)
     n = balance.pressure_flux.shape[0]
     recess = balance.n_land + np.arange(grid.recess_count)
@@ -312,6 +316,13 @@ def _globalised(balance, supply, bearing, recess, fixed, cavitating: bool):
     if np.all(np.isfinite(polished)) and not np.any((polished < -round_off) & ~fixed):
         return np.where(full, polished, 0.0), np.where(full, 0.0, polished)
     return pressure, void
+
+
+def _has_oil_source(grid: FilmGrid, supply: Supply | None) -> bool:
+    """Whether oil enters the film: recesses held at their supply pressure or fed a constant flow, or fed through a
+    restrictor from a supply pressure above ambient."""
+    return bool(grid.recess_count) and (isinstance(supply.restrictor, DirectSupply | ConstantFlow)
+                                        or supply.pressure > 0)
 
 
 def _linear_restrictor(supply: Supply | None) -> bool:
