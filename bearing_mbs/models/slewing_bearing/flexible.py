@@ -28,7 +28,7 @@ thesis's ellipse (a = 8.298 mm, b = 1.304 mm) gives 5.67e-10 m/N (``tests/test_s
 
 The sectors are independent ("assembled around the ring" block by block, as the thesis's model does) and massless:
 for each inner-ring displacement every ball's η minimises its energy
-(:func:`bearing_mbs.elements.slewing_bearings.ball_state`, which the force element shares); the bearing's stiffness
+(:func:`bearing_mbs.elements.slewing_balls.ball_state`, which the force element shares); the bearing's stiffness
 is the rigid-ring tangent less a Schur complement for what the sectors give way. Rigid rings are the limit K → ∞.
 """
 
@@ -38,7 +38,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearing_mbs.elements.slewing_bearings import flexible_bearing_state
+from bearing_mbs.elements.slewing_balls import flexible_bearing_state
 from bearing_mbs.models.slewing_bearing.ring_stiffness import ring_stiffness
 from bearing_mbs.spec import SpecError
 
