@@ -215,3 +215,16 @@ def test_bad_input_is_refused(make):
     cavitation model."""
     with pytest.raises(ValueError):
         make()
+
+
+def test_a_fed_mass_conserving_film_lies_above_gumbel_as_raimondi_and_boyd_say():
+    """L/D = 1, ε = 0.6, an ambient groove one cell wide at the thickest film: Raimondi and Boyd's S = 0.121
+    (Reynolds' condition) within 3 %, and 10–20 % above Gümbel's half-Sommerfeld load (measured +14 %): JFO's film
+    extends past θ = π, where Gümbel's ends."""
+    n_theta = 180
+    bearing = JournalBearing(D, D, 35e-6, MU, RHO, Recesses(1, 360 / n_theta, D, 0.001))
+    state = JournalState((-0.6 * 35e-6, 0.0), speed=OMEGA)
+    jfo = solve_film(bearing, state, Supply(0.0), grid=(n_theta, 40), cavitation="jfo").load_capacity
+    gumbel = solve_film(bearing, state, Supply(0.0), grid=(n_theta, 40), cavitation="gumbel").load_capacity
+    assert closed_forms.sommerfeld_number(jfo, OMEGA, D / 2, D, 35e-6, MU) == pytest.approx(0.121, rel=0.03)
+    assert 1.10 < jfo / gumbel < 1.20
