@@ -81,6 +81,18 @@ def pack(joints) -> SlewingBearingArrays:
         flexible=column(lambda j: j.sector is not None, np.bool_), modes=modes, sector=sector)
 
 
+@numba.njit(cache=True)
+def _flexible_sums(joints, j, radial, axial, tilt):
+    """(F_r, F_a, M and the six entries k00, k01, k02, k11, k12, k22 of the tangent) of joint j with flexible rings,
+    every ball's sectors relaxed from η = 0 (a call of its own: inlined, it slowed every driver's step)."""
+    load, tangent, _, _, _, _ = flexible_bearing_state(
+        joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j], joints.contact_angle[j],
+        joints.stiffness[j], joints.modes[j], joints.sector[j], np.array([radial, axial, tilt]),
+        np.zeros((joints.balls[j], joints.sector.shape[1])))
+    return (load[0], load[1], load[2], tangent[0, 0], tangent[0, 1], tangent[0, 2], tangent[1, 1], tangent[1, 2],
+            tangent[2, 2])
+
+
 @numba.njit(cache=True, inline="always")
 def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
     joints = parameters
@@ -94,12 +106,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         f0 = f1 = f2 = 0.0
         k00 = k01 = k02 = k11 = k12 = k22 = 0.0
         if joints.flexible[j]:
-            load, tangent, _, _, _, _ = flexible_bearing_state(
-                balls, r, a0, alpha, k, joints.modes[j], joints.sector[j], np.array([radial, axial, tilt]),
-                np.zeros((balls, joints.sector.shape[1])))
-            f0, f1, f2 = load[0], load[1], load[2]
-            k00, k01, k02, k11, k12, k22 = (tangent[0, 0], tangent[0, 1], tangent[0, 2], tangent[1, 1],
-                                            tangent[1, 2], tangent[2, 2])
+            f0, f1, f2, k00, k01, k02, k11, k12, k22 = _flexible_sums(joints, j, radial, axial, tilt)
             balls = 0  # the loop below is the rigid rings'
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
@@ -228,8 +235,9 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
         tangent = np.zeros((3, 3))
         rate_term = np.zeros((3, 3))
         if joints.flexible[j]:  # the tangent of the relaxed sectors; the damping's rate term is left out
-            _, tangent, _, _, _, _ = flexible_bearing_state(balls, r, a0, alpha, k, joints.modes[j], joints.sector[j],
-                                                            displacement, np.zeros((balls, joints.sector.shape[1])))
+            _, _, _, k00, k01, k02, k11, k12, k22 = _flexible_sums(joints, j, displacement[0], displacement[1],
+                                                                    displacement[2])
+            tangent = np.array([[k00, k01, k02], [k01, k11, k12], [k02, k12, k22]])
             balls = 0
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
