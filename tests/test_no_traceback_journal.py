@@ -5,7 +5,8 @@ Drawn over the documented range of every key (docs/scenario-format.md, "Journal-
 bearing_mbs/models/journal_bearing/spec.py): the bore's diameter and length, the radial clearance up to D/2, the
 viscosity and density, speeds from −1e6 to 1e6 rpm (0: hydrostatic), ε in [0, 1) up to 1 − 1e-9, any attitude,
 both cavitation models, plain journals and recessed ones of 1 to 12 recesses with every restrictor (a
-capillary's or orifice's bore given, or sized for a design pressure ratio). The grid is
+capillary's or orifice's bore given, or sized for a design pressure ratio); the oil by its viscosity, or now and
+then by its viscosity-temperature line ([journal.oil]) at its inlet or effective temperature. The grid is
 drawn small (4 to 40 cells around, 4 to 16 along: each solve then takes milliseconds); coarse grids are valid input.
 """
 
@@ -78,6 +79,14 @@ def journal_scenarios(draw) -> dict:
     # the mass-conserving film needs an oil source: mostly drawn with one (without, it is refused by name)
     if draw(st.booleans()) or (cavitation == "jfo" and draw(st.integers(0, 9)) > 0):
         journal["recesses"] = draw(recesses(length, grid, source=cavitation == "jfo" and draw(st.integers(0, 9)) > 0))
+    if draw(st.integers(0, 3)) == 0:  # the oil by its viscosity-temperature line instead, now and then thermal
+        del journal["viscosity"], journal["density"]
+        viscosity_40 = draw(log_uniform(2e-6, 1e-2))
+        journal["oil"] = {"viscosity_40": viscosity_40,
+                          "viscosity_100": viscosity_40 * draw(log_uniform(0.01, 0.999)),
+                          "density_15": draw(uniform(600.0, 1200.0)), "specific_heat": draw(log_uniform(1e2, 1e4)),
+                          "inlet_temperature": draw(uniform(-10.0, 120.0))}
+        journal["thermal"] = draw(st.sampled_from(["isothermal", "effective"]))
     return {"scenario": {"name": "drawn_journal", "model": "journal_bearing", "end_time": 1.0}, "journal": journal}
 
 

@@ -54,14 +54,15 @@ CAPILLARY_REYNOLDS_LIMIT, TAYLOR_LIMIT = 2000.0, 41.3
 def taylor_number(journal) -> float:
     """Ta = ρ Ω R C/μ · sqrt(C/R) [-] of the ``[journal]`` section's film."""
     radius, clearance = journal.diameter / 2, journal.radial_clearance
-    return journal.density * abs(journal.speed) * radius * clearance / journal.viscosity * math.sqrt(clearance / radius)
+    return (journal.oil_density * abs(journal.speed) * radius * clearance / journal.oil_viscosity
+            * math.sqrt(clearance / radius))
 
 
 def largest_capillary_reynolds(journal, film: FilmSolution, supply) -> float | None:
     """The largest Reynolds number [-] of the recesses' capillaries (None without capillaries)."""
     if supply is None or not isinstance(supply.restrictor, Capillary):
         return None
-    return max(capillary_reynolds(q, supply.restrictor.diameter, journal.viscosity, journal.density)
+    return max(capillary_reynolds(q, supply.restrictor.diameter, journal.oil_viscosity, journal.oil_density)
                for q in film.supply_flows)
 
 

@@ -6,15 +6,21 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from bearing_mbs.contact.lubricant import Lubricant, LubricantError
 from bearing_mbs.fluid_film.design import recess_outflow
 from bearing_mbs.fluid_film.journal import MAX_CELLS, FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS, capillary_bore
 from bearing_mbs.fluid_film.reynolds import CAVITATION
-from bearing_mbs.spec import Spec
+from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import in_range, non_negative, one_of, positive, require
 
 #: The ``[scenario] model`` value of a journal-bearing scenario.
 MODEL_NAME = "journal_bearing"
+
+#: Thermal models of the film: at the oil's inlet viscosity, or at the heat balance's effective temperature.
+THERMAL = ("isothermal", "effective")
+#: The oil's density [kg/m³] when the scenario gives neither ``density`` nor an oil (document 001, Table 2).
+DENSITY = 860.0
 
 #: What each restrictor needs besides the supply pressure.
 RESTRICTOR_KEYS = {"capillary": ("capillary_length", "capillary_diameter"), "orifice": ("orifice_diameter",),
@@ -80,10 +86,40 @@ class RecessSection:
 
 
 @dataclass(frozen=True)
+class OilSection:
+    """``[journal.oil]``: the oil by its viscosity–temperature line (ASTM D341's Walther equation through the
+    kinematic viscosity_40 and viscosity_100 [m²/s] at 40 and 100 °C, :mod:`bearing_mbs.contact.lubricant`),
+    density_15 [kg/m³] at 15 °C and its thermal_expansion [1/K], specific_heat c_p [J/(kg K)] (document 001: 2000),
+    and the inlet_temperature [°C] at which it enters the bearing, within the fit's range."""
+
+    viscosity_40: float
+    viscosity_100: float
+    density_15: float = 870.0
+    thermal_expansion: float = 6.4e-4
+    specific_heat: float = 2000.0
+    inlet_temperature: float = 40.0
+
+    def __post_init__(self):
+        positive("specific_heat", self.specific_heat)
+        try:
+            self.lubricant().kinematic_viscosity(self.inlet_temperature)
+        except LubricantError as error:
+            field = "inlet_temperature" if error.field == "temperature" else error.field
+            raise SpecError(field, error.value, error.allowed) from None
+
+    def lubricant(self) -> Lubricant:
+        return Lubricant("the scenario's oil", self.viscosity_40, self.viscosity_100, self.density_15,
+                         self.thermal_expansion, source="[journal.oil]")
+
+
+@dataclass(frozen=True)
 class JournalSection:
     """``[journal]``: diameter D [m] > 0 and length L [m] > 0 of the bore; radial_clearance C [m] in (0, D/2);
-    speed_rpm [rpm] of the journal (counter-clockwise positive; 0: hydrostatic); viscosity μ [Pa s] > 0; density
-    ρ [kg/m³] > 0; eccentricity_ratio ε = e/C in [0, 1) and attitude [deg], the direction of the journal centre's
+    speed_rpm [rpm] of the journal (counter-clockwise positive; 0: hydrostatic); viscosity μ [Pa s] > 0 and density
+    ρ [kg/m³] > 0 (default 860), or instead an ``oil`` ([journal.oil], its values at its inlet temperature); thermal
+    ``isothermal`` (the film at the oil's inlet viscosity) or ``effective`` (the film at the effective temperature
+    of the heat balance, :mod:`.thermal`: needs [journal.oil] and recesses, whose flow carries the heat);
+    eccentricity_ratio ε = e/C in [0, 1) and attitude [deg], the direction of the journal centre's
     displacement from +x (the first recess is centred at its first_angle), for the static solve; cavitation
     ``gumbel`` (half-Sommerfeld) or ``jfo`` (mass-conserving: it needs an oil source, recesses fed from a supply
     pressure > 0, a constant flow or a supply groove); grid = [n_theta, n_z] cells, each >= 4, fine enough that
@@ -92,22 +128,38 @@ class JournalSection:
     diameter: float
     length: float
     radial_clearance: float
-    viscosity: float
+    viscosity: float | None = None
     speed_rpm: float = 0.0
-    density: float = 860.0
+    density: float | None = None
     eccentricity_ratio: float = 0.0
     attitude: float = 0.0
     cavitation: str = "gumbel"
     grid: tuple[int, int] = (240, 60)
     recesses: RecessSection | None = None
+    oil: OilSection | None = None
+    thermal: str = "isothermal"
 
     def __post_init__(self):
         positive("diameter", self.diameter)
         positive("length", self.length)
         in_range("radial_clearance", self.radial_clearance, 0.0, self.diameter / 2, "m", low_open=True, high_open=True)
-        positive("viscosity", self.viscosity)
+        if self.oil is None:
+            require(self.viscosity is not None, "viscosity", None, "> 0 [Pa s], or a [journal.oil] table")
+            positive("viscosity", self.viscosity)
+            if self.density is not None:
+                positive("density", self.density)
+        else:
+            for name in ("viscosity", "density"):
+                require(getattr(self, name) is None, name, getattr(self, name),
+                        "left out with [journal.oil]: the oil's value at its inlet temperature is used")
         in_range("speed_rpm", self.speed_rpm, -1e6, 1e6, "rpm")
-        positive("density", self.density)
+        one_of("thermal", self.thermal, THERMAL)
+        if self.thermal == "effective":
+            require(self.oil is not None, "thermal", self.thermal,
+                    "'isothermal' unless a [journal.oil] gives the viscosity against temperature")
+            require(self.recesses is not None, "thermal", self.thermal,
+                    "'isothermal' for a plain bore: the heat balance needs the oil flow through the bearing "
+                    "([journal.recesses] with a supply)")
         in_range("eccentricity_ratio", self.eccentricity_ratio, 0.0, 1.0, "-", high_open=True)
         in_range("attitude", self.attitude, -360.0, 360.0, "deg")
         one_of("cavitation", self.cavitation, CAVITATION)
@@ -130,10 +182,24 @@ class JournalSection:
                     "alike; give [journal.recesses] with supply_pressure > 0, a constant flow, or a supply groove "
                     "(restrictor = 'none', 0 Pa for an ambient groove)")
 
+    @property
+    def oil_viscosity(self) -> float:
+        """μ [Pa s] of the isothermal film: ``viscosity``, or the oil's at its inlet temperature."""
+        if self.oil is None:
+            return self.viscosity
+        return self.oil.lubricant().dynamic_viscosity(self.oil.inlet_temperature)
+
+    @property
+    def oil_density(self) -> float:
+        """ρ [kg/m³]: ``density`` (default 860), or the oil's at its inlet temperature."""
+        if self.oil is None:
+            return DENSITY if self.density is None else self.density
+        return self.oil.lubricant().density(self.oil.inlet_temperature)
+
     def bearing(self) -> JournalBearing:
         """The bore and its recesses (without their supply)."""
         r = self.recesses
-        return JournalBearing(self.diameter, self.length, self.radial_clearance, self.viscosity, self.density,
+        return JournalBearing(self.diameter, self.length, self.radial_clearance, self.oil_viscosity, self.oil_density,
                               None if r is None else Recesses(r.count, r.angular_width, r.axial_length, r.depth,
                                                               r.first_angle))
 
@@ -152,7 +218,7 @@ class JournalSection:
         r = self.recesses
         flow = recess_outflow(self.bearing(), r.design_pressure_ratio * r.supply_pressure, self.grid)
         bore = capillary_bore(r.capillary_length, flow, (1 - r.design_pressure_ratio) * r.supply_pressure,
-                              self.viscosity)
+                              self.oil_viscosity)
         require(r.capillary_length >= CAPILLARY_MIN_ASPECT * bore, "recesses.design_pressure_ratio",
                 r.design_pressure_ratio, f"a ratio whose capillary (bore {bore:g} m) is at least {CAPILLARY_MIN_ASPECT:g} "
                 f"bores long: a capillary_length >= {CAPILLARY_MIN_ASPECT * bore:g} m, or another ratio")

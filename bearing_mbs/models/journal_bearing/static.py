@@ -11,6 +11,7 @@ recess, document 001's resistance network beside the full solution. The summary'
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +32,7 @@ from bearing_mbs.models.journal_bearing.checks import (
     taylor_number,
 )
 from bearing_mbs.models.journal_bearing.spec import SIZED_BORE, JournalSpec
+from bearing_mbs.models.journal_bearing.thermal import effective_film
 
 SUMMARY_FILE = "summary.json"
 #: Eccentricity ratios of the load curve.
@@ -67,7 +69,49 @@ def state_at(spec: JournalSpec, eccentricity_ratio: float) -> JournalState:
     return JournalState((e * math.cos(angle), e * math.sin(angle)), (0.0, 0.0), j.speed)
 
 
+class TooHot(RuntimeError):
+    """The heat balance puts the film beyond the top of its oil's viscosity fit."""
+
+
 def journal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
+    """The summary (with its status and checks), the film at the scenario's eccentricity and the load curve; with
+    ``thermal = "effective"``, all of them at the heat balance's effective temperature (:mod:`.thermal`)."""
+    if spec.journal.thermal == "effective":
+        return _effective_summary(spec)
+    return _isothermal_summary(spec)
+
+
+def _effective_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
+    j = spec.journal
+    bearing, supply = bearing_of(spec)  # the restrictors as built (or sized) at the inlet temperature
+    state = state_at(spec, j.eccentricity_ratio)
+
+    def friction_and_flow(viscosity):  # (a grid holds its bearing, viscosity included: one per viscosity)
+        film = solve_film(replace(bearing, viscosity=viscosity), state, supply, j.grid, j.cavitation)
+        return film.friction_power, film.supply_flow
+
+    effective = effective_film(j.oil, friction_and_flow)
+    if effective.temperature is None:
+        raise TooHot(f"the heat balance puts the film above {effective.highest:g} °C, the top of the oil's viscosity "
+                     "fit. Likely fix: a cooler journal.oil.inlet_temperature, a lower journal.speed_rpm or a larger "
+                     "journal.radial_clearance")
+    recesses = j.recesses
+    if recesses.design_pressure_ratio is not None:  # keep the bore sized at the inlet temperature
+        recesses = replace(recesses, design_pressure_ratio=None,
+                           **{SIZED_BORE[recesses.restrictor]: supply.restrictor.diameter})
+    film_spec = replace(spec, journal=replace(j, viscosity=effective.viscosity, density=j.oil_density, oil=None,
+                                              thermal="isothermal", recesses=recesses))
+    summary, film, curve = _isothermal_summary(film_spec)
+    summary.update(rounded(json_safe({
+        "thermal": "effective", "inlet_temperature": j.oil.inlet_temperature,
+        "effective_temperature": effective.temperature, "temperature_rise": effective.rise,
+        "inlet_viscosity": j.oil_viscosity, "effective_viscosity": effective.viscosity})))
+    summary["units"].update({"inlet_temperature": "degC", "effective_temperature": "degC", "temperature_rise": "K",
+                             "inlet_viscosity": "Pa s", "effective_viscosity": "Pa s"})
+    return summary, film, curve
+
+
+def _isothermal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
     j = spec.journal
     bearing, supply = bearing_of(spec)
     grid = FilmGrid.build(bearing, *j.grid)
@@ -120,7 +164,7 @@ def _network(spec, bearing, supply, film) -> dict:
         if r is not None else False
     if not (aligned and isinstance(getattr(supply, "restrictor", None), Capillary) and j.speed == 0 and r.count > 1):
         return {}
-    resistance = capillary_resistance(supply.restrictor.length, supply.restrictor.diameter, j.viscosity)
+    resistance = capillary_resistance(supply.restrictor.length, supply.restrictor.diameter, j.oil_viscosity)
     pressures, _ = network_recess_pressures(bearing, j.eccentricity_ratio, supply.pressure, resistance)
     return {"network_recess_pressures": pressures.tolist(),
             "network_difference": float(np.max(np.abs(pressures / film.recess_pressures - 1)))}
@@ -134,9 +178,10 @@ def write_journal(spec: JournalSpec, directory: str | Path, figures: bool = True
     directory.mkdir(parents=True, exist_ok=True)
     try:
         summary, film, curve = journal_summary(spec)
-    except FilmNotConverged as error:
+    except (FilmNotConverged, TooHot) as error:
+        fix = "" if isinstance(error, TooHot) else ". Likely fix: journal.cavitation = 'gumbel' or a finer journal.grid"
         summary = {"scenario": spec.scenario.name, "model": spec.scenario.model,
-                   **status_entries((), f"{error}. Likely fix: journal.cavitation = 'gumbel' or a finer journal.grid")}
+                   **status_entries((), f"{error}{fix}")}
         write_json(directory / SUMMARY_FILE, summary)
         return summary
     write_json(directory / SUMMARY_FILE, summary)
