@@ -1,8 +1,9 @@
 """The ``slewing_bearing`` model (document 002): four-point-contact ball slewing bearings of wind turbines.
 
 The condensed ring-stiffness parametrisation (:mod:`.ring_stiffness`), the quasi-static load distribution with
-rigid rings (:mod:`.load_distribution`, ``bearing-mbs slewing``: :mod:`.static`), and the blade-pitch run
-(:mod:`.pitch`, ``bearing-mbs run``) on the slewing-bearing force element.
+rigid or flexible rings (:mod:`.load_distribution`, :mod:`.flexible`; ``bearing-mbs slewing``: :mod:`.static`,
+:mod:`.figures`), and the blade-pitch run (:mod:`.pitch`, ``bearing-mbs run``) on the slewing-bearing force
+element.
 """
 
 from bearing_mbs.models.protocol import Model
