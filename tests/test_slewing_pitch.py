@@ -111,7 +111,7 @@ def test_the_blade_root_on_flexible_rings_carries_the_quasi_static_load():
 
 @pytest.mark.slow
 def test_the_blade_root_on_flexible_rings_follows_their_quasi_static_solution():
-    """The whole run (17 s, about 100 s of CPU): as the rigid rings' acceptance."""
+    """The whole run (17 s, about 30 s of CPU): as the rigid rings' acceptance."""
     spec = load_spec(PITCH, ["slewing.rings='flexible'"])
     summary = summarize(spec, *run_spec(spec))
     assert summary["status"] == "success", summary["checks"]
