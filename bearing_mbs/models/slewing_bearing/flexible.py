@@ -35,6 +35,7 @@ is the rigid-ring tangent less a Schur complement for what the sectors give way.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -88,7 +89,7 @@ class FlexibleRings:
         return cls(ring_stiffness(pitch_diameter, "inner", mount, coefficients),
                    ring_stiffness(pitch_diameter, "outer", mount, coefficients), coupling)
 
-    @property
+    @cached_property
     def _basis(self) -> tuple[np.ndarray, np.ndarray]:
         """(Φ (8, m): the eight centre displacements per unit of η, K_η (m, m))."""
         if self.coupling == "full_matrix":
