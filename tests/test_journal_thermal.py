@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import pytest
 
@@ -64,8 +65,8 @@ def test_the_film_is_the_isothermal_film_at_the_effective_viscosity(tmp_path):
     isothermal = run(tmp_path, "journal.thermal='isothermal'", name="iso")
     # the same bearing given by its viscosity instead of its oil: every [journal.oil] key must go
     fixed = tmp_path / "fixed.toml"
-    text = open(THERMAL).read().split("[journal.oil]")[0] + "[journal.recesses]" + open(THERMAL).read().split(
-        "[journal.recesses]")[1]
+    original = Path(THERMAL).read_text()
+    text = original.split("[journal.oil]")[0] + "[journal.recesses]" + original.split("[journal.recesses]")[1]
     fixed.write_text(text.replace('thermal = "effective"', f'thermal = "isothermal"\nviscosity = '
                                   f'{effective["effective_viscosity"]!r}\ndensity = {density(40.0)!r}'))
     out = tmp_path / "at_effective"

@@ -6,7 +6,8 @@ bearing_mbs/models/journal_bearing/spec.py): the bore's diameter and length, the
 viscosity and density, speeds from −1e6 to 1e6 rpm (0: hydrostatic), ε in [0, 1) up to 1 − 1e-9, any attitude,
 both cavitation models, plain journals and recessed ones of 1 to 12 recesses with every restrictor (a
 capillary's or orifice's bore given, or sized for a design pressure ratio); the oil by its viscosity, or now and
-then by its viscosity-temperature line ([journal.oil]) at its inlet or effective temperature. The grid is
+then by its viscosity-temperature line ([journal.oil]) at its inlet or effective temperature; now and then the
+coefficients over one or two speeds under a static load. The grid is
 drawn small (4 to 40 cells around, 4 to 16 along: each solve then takes milliseconds); coarse grids are valid input.
 """
 
@@ -79,6 +80,10 @@ def journal_scenarios(draw) -> dict:
     # the mass-conserving film needs an oil source: mostly drawn with one (without, it is refused by name)
     if draw(st.booleans()) or (cavitation == "jfo" and draw(st.integers(0, 9)) > 0):
         journal["recesses"] = draw(recesses(length, grid, source=cavitation == "jfo" and draw(st.integers(0, 9)) > 0))
+    if draw(st.integers(0, 19)) == 0:  # the coefficients over speed under a static load (now and then: slow)
+        journal["coefficient_speeds_rpm"] = draw(st.lists(uniform(-SPEED_LIMIT_RPM, SPEED_LIMIT_RPM), min_size=1,
+                                                          max_size=2))
+        journal["static_load"] = [draw(uniform(-1e6, 1e6)), draw(st.one_of(st.just(0.0), uniform(-1e6, 1e6)))]
     if draw(st.integers(0, 3)) == 0:  # the oil by its viscosity-temperature line instead, now and then thermal
         del journal["viscosity"], journal["density"]
         viscosity_40 = draw(log_uniform(2e-6, 1e-2))

@@ -12,7 +12,7 @@ from bearing_mbs.fluid_film.journal import MAX_CELLS, FilmGrid, JournalBearing, 
 from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS, capillary_bore
 from bearing_mbs.fluid_film.reynolds import CAVITATION
 from bearing_mbs.spec import Spec, SpecError
-from bearing_mbs.spec.fields import in_range, non_negative, one_of, positive, require
+from bearing_mbs.spec.fields import finite, in_range, non_negative, one_of, positive, require
 
 #: The ``[scenario] model`` value of a journal-bearing scenario.
 MODEL_NAME = "journal_bearing"
@@ -119,7 +119,9 @@ class JournalSection:
     ρ [kg/m³] > 0 (default 860), or instead an ``oil`` ([journal.oil], its values at its inlet temperature); thermal
     ``isothermal`` (the film at the oil's inlet viscosity) or ``effective`` (the film at the effective temperature
     of the heat balance, :mod:`.thermal`: needs [journal.oil] and recesses, whose flow carries the heat);
-    eccentricity_ratio ε = e/C in [0, 1) and attitude [deg], the direction of the journal centre's
+    coefficient_speeds_rpm [rpm], optional: the speeds at which the eight coefficients are also given, each at the
+    journal's equilibrium under static_load [F_x, F_y] [N] (the steady force on the journal, e.g. [0, −W] for a
+    weight W); eccentricity_ratio ε = e/C in [0, 1) and attitude [deg], the direction of the journal centre's
     displacement from +x (the first recess is centred at its first_angle), for the static solve; cavitation
     ``gumbel`` (half-Sommerfeld) or ``jfo`` (mass-conserving: it needs an oil source, recesses fed from a supply
     pressure > 0, a constant flow or a supply groove); grid = [n_theta, n_z] cells, each >= 4, fine enough that
@@ -138,6 +140,8 @@ class JournalSection:
     recesses: RecessSection | None = None
     oil: OilSection | None = None
     thermal: str = "isothermal"
+    coefficient_speeds_rpm: tuple[float, ...] = ()
+    static_load: tuple[float, float] = (0.0, 0.0)
 
     def __post_init__(self):
         positive("diameter", self.diameter)
@@ -154,6 +158,14 @@ class JournalSection:
                         "left out with [journal.oil]: the oil's value at its inlet temperature is used")
         in_range("speed_rpm", self.speed_rpm, -1e6, 1e6, "rpm")
         one_of("thermal", self.thermal, THERMAL)
+        for k, rpm in enumerate(self.coefficient_speeds_rpm):
+            in_range(f"coefficient_speeds_rpm.{k}", rpm, -1e6, 1e6, "rpm")
+        require(len(self.static_load) == 2, "static_load", list(self.static_load), "[F_x, F_y] [N]")
+        for k, force in enumerate(self.static_load):
+            finite(f"static_load.{k}", force)
+        require(not (self.coefficient_speeds_rpm and self.thermal == "effective"), "coefficient_speeds_rpm",
+                list(self.coefficient_speeds_rpm), "[] with thermal = 'effective' (the effective temperature is the "
+                "scenario's operating point's, not each speed's)")
         if self.thermal == "effective":
             require(self.oil is not None, "thermal", self.thermal,
                     "'isothermal' unless a [journal.oil] gives the viscosity against temperature")

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.checks import upper_bound
 from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
 from bearing_mbs.fluid_film.design import sized_capillary, sized_orifice
@@ -32,6 +33,9 @@ from bearing_mbs.models.journal_bearing.checks import (
     taylor_number,
 )
 from bearing_mbs.models.journal_bearing.spec import SIZED_BORE, JournalSpec
+from bearing_mbs.models.journal_bearing.speeds import UNITS as SPEED_UNITS
+from bearing_mbs.models.journal_bearing.speeds import coefficients_over_speed, write_table
+from bearing_mbs.models.journal_bearing.speeds import plot as plot_speeds
 from bearing_mbs.models.journal_bearing.thermal import effective_film
 
 SUMMARY_FILE = "summary.json"
@@ -43,7 +47,7 @@ UNITS = {"load_capacity": "N", "force": "N", "attitude_angle": "deg", "flow": "m
          "min_film_thickness": "m", "max_pressure": "Pa", "load_curve": "-, N, N/m",
          "network_recess_pressures": "Pa", "network_difference": "-", "mass_balance_error": "-",
          "recess_areas": "m^2", "capillary_reynolds": "-", "taylor_number": "-", "design_pressure_ratio": "-",
-         "sized_bore": "m"}
+         "sized_bore": "m", "coefficients_over_speed": SPEED_UNITS}
 
 
 def bearing_of(spec: JournalSpec) -> tuple[JournalBearing, Supply | None]:
@@ -147,6 +151,14 @@ def _isothermal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
         "load_curve": [list(row) for row in curve],
         "taylor_number": taylor_number(j),
     }
+    if j.coefficient_speeds_rpm:
+        summary["coefficients_over_speed"] = coefficients_over_speed(force, j.radial_clearance, j.static_load,
+                                                                     j.coefficient_speeds_rpm)
+        missing = [row["speed_rpm"] for row in summary["coefficients_over_speed"] if row["eccentricity"] is None]
+        checks.append(upper_bound("speed_equilibria", len(missing), 0, "count",
+                                  f"no equilibrium under journal.static_load at {missing} rpm. Likely fix: a smaller "
+                                  "static_load or a higher speed (the film must carry it inside the clearance)"))
+        summary.update(status_entries(checks))
     if j.recesses is not None and j.recesses.design_pressure_ratio is not None:
         summary["design_pressure_ratio"] = j.recesses.design_pressure_ratio
         summary["sized_bore"] = {SIZED_BORE[j.recesses.restrictor]: supply.restrictor.diameter}
@@ -185,8 +197,12 @@ def write_journal(spec: JournalSpec, directory: str | Path, figures: bool = True
         write_json(directory / SUMMARY_FILE, summary)
         return summary
     write_json(directory / SUMMARY_FILE, summary)
+    if "coefficients_over_speed" in summary:
+        write_table(summary["coefficients_over_speed"], directory / "coefficients.csv")
     if figures:
         note = status_note(summary)
+        if "coefficients_over_speed" in summary:
+            plot_speeds(summary["coefficients_over_speed"], spec.scenario.name, directory / "coefficients.png", note)
         _plot_pressure(spec, film, directory / "pressure_map.png", note)
         _plot_curve(spec, curve, directory / "load_curve.png", note)
     return summary

@@ -16,7 +16,7 @@ import math
 from functools import lru_cache
 
 import numpy as np
-from scipy.optimize import brentq, root
+from scipy.optimize import brentq
 
 from bearing_mbs.core.scene import Body, Profile, Scene
 from bearing_mbs.core.topology import Topology
@@ -25,6 +25,7 @@ from bearing_mbs.elements.journal_bearings import JournalFilm
 from bearing_mbs.elements.unbalances import Unbalance
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients
+from bearing_mbs.fluid_film.equilibrium import film_equilibrium
 from bearing_mbs.fluid_film.force_map import build_force_map, interpolation_error, map_force
 from bearing_mbs.fluid_film.journal import JournalBearing
 from bearing_mbs.fluid_film.reynolds import JournalState
@@ -71,45 +72,14 @@ def film_force(spec: RotorSpec):
 
 
 def equilibrium(spec: RotorSpec, speed: float) -> np.ndarray:
-    """The journal centre (x, y) [m] where the films carry the rotor's weight at speed Ω [rad/s]."""
-    force, clearance = film_force(spec), spec.bearing.radial_clearance
+    """The journal centre (x, y) [m] where the films carry the rotor's weight at speed Ω [rad/s]
+    (:func:`~bearing_mbs.fluid_film.equilibrium.film_equilibrium`)."""
     weight = np.array([0.0, -spec.rotor.mass * spec.scenario.gravity])
-
-    def residual(x):
-        return (force(JournalState(tuple(x * clearance), (0.0, 0.0), speed)) + weight) / max(abs(weight[1]), 1.0)
-
-    if not np.any(weight):
-        return np.zeros(2)
-    linear = _linear_guess(residual, -weight / max(abs(weight[1]), 1.0))
-    if np.hypot(*linear) < LINEAR_ECCENTRICITY:  # the linear film's answer, exact to O(ε²), below what root resolves
-        return linear * clearance
-    for guess in (linear, [0.1, -0.3], [0.3, -0.6], [0.1, -0.9]):
-        solution = root(residual, guess, method="hybr")
-        if solution.success and np.hypot(*solution.x) < 1:
-            return solution.x * clearance
-    raise SpecError("drive.start_rpm", speed * 30 / math.pi,
-                    "a speed at which the bearings carry the rotor's weight (no film equilibrium found below ε = 1)")
-
-
-#: Below this eccentricity ratio the film's force is linear in the eccentricity (to O(ε²)), and so is the
-#: equilibrium: the linear estimate is kept, where a root finder would stall on the force's rounding.
-LINEAR_ECCENTRICITY = 1e-6
-
-
-def _linear_guess(residual, target: np.ndarray, probe: float = LINEAR_ECCENTRICITY) -> np.ndarray:
-    """The eccentricity ratio (x, y)/C where the film's force, taken as linear in the eccentricity near the centre
-    (a stretch and a turn: x + iy ↦ a (x + iy), as a film symmetric about the centre is to first order), reaches
-    ``target`` (the weight's opposite, in the residual's units): ``a`` from the force at an offset ``probe`` (its
-    second-order terms turn the answer by about ``probe``). At large Sommerfeld numbers (fast, viscous, tight) the
-    equilibrium lies orders of magnitude inside the fixed guesses, where Powell's method stalls."""
-    offset = complex(0.0, -probe)
-    lift = residual(np.array([offset.real, offset.imag])) - residual(np.zeros(2))
-    a = complex(*lift) / offset
-    if not (abs(a) > 0 and math.isfinite(abs(a))):
-        return np.array([0.1, -0.3])
-    guess = complex(*target) / a
-    guess *= min(1.0, 0.5 / abs(guess))  # inside the clearance
-    return np.array([guess.real, guess.imag])
+    found = film_equilibrium(film_force(spec), spec.bearing.radial_clearance, weight, speed)
+    if found is None:
+        raise SpecError("drive.start_rpm", speed * 30 / math.pi,
+                        "a speed at which the bearings carry the rotor's weight (no film equilibrium found below ε = 1)")
+    return found
 
 
 def growth_rate(spec: RotorSpec, speed: float) -> float:
