@@ -82,15 +82,15 @@ def pack(joints) -> SlewingBearingArrays:
 
 
 @numba.njit(cache=True)
-def _flexible_sums(joints, j, radial, axial, tilt):
-    """(F_r, F_a, M and the six entries k00, k01, k02, k11, k12, k22 of the tangent) of joint j with flexible rings,
-    every ball's sectors relaxed from η = 0 (a call of its own: inlined, it slowed every driver's step)."""
-    load, tangent, _, _, _, _ = flexible_bearing_state(
+def _flexible_joint(joints, j, displacement):
+    """(load (3,), tangent (3, 3), energy [J]) of joint j with flexible rings at ``displacement`` (3,), every ball's
+    sectors relaxed from η = 0 (:func:`.slewing_balls.flexible_bearing_state`). Compiled and not inlined: the
+    force element calls it as the quasi-static twin does (inlined, it slowed every driver's step)."""
+    load, tangent, _, _, energy, _ = flexible_bearing_state(
         joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j], joints.contact_angle[j],
-        joints.stiffness[j], joints.modes[j], joints.sector[j], np.array([radial, axial, tilt]),
+        joints.stiffness[j], joints.modes[j], joints.sector[j], displacement,
         np.zeros((joints.balls[j], joints.sector.shape[1])))
-    return (load[0], load[1], load[2], tangent[0, 0], tangent[0, 1], tangent[0, 2], tangent[1, 1], tangent[1, 2],
-            tangent[2, 2])
+    return load, tangent, energy
 
 
 @numba.njit(cache=True, inline="always")
@@ -106,7 +106,10 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         f0 = f1 = f2 = 0.0
         k00 = k01 = k02 = k11 = k12 = k22 = 0.0
         if joints.flexible[j]:
-            f0, f1, f2, k00, k01, k02, k11, k12, k22 = _flexible_sums(joints, j, radial, axial, tilt)
+            load, tangent, _ = _flexible_joint(joints, j, np.array([radial, axial, tilt]))
+            f0, f1, f2 = load[0], load[1], load[2]
+            k00, k01, k02, k11, k12, k22 = (tangent[0, 0], tangent[0, 1], tangent[0, 2], tangent[1, 1],
+                                            tangent[1, 2], tangent[2, 2])
             balls = 0  # the loop below is the rigid rings'
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
@@ -172,21 +175,12 @@ def bearing_state(balls: int, pitch_radius: float, centre_distance: float, conta
     return load, tangent, q, np.arctan2(np.abs(s_z), s_r)
 
 
-def _flexible_state(joints, j, displacement):
-    """(load, tangent, energy) of joint j with flexible rings at one displacement (3,) (:func:`.slewing_balls.ball_state`)."""
-    load, tangent, _, _, energy, _ = flexible_bearing_state(
-        joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j], joints.contact_angle[j],
-        joints.stiffness[j], joints.modes[j], joints.sector[j], np.asarray(displacement, dtype=float),
-        np.zeros((joints.balls[j], joints.sector.shape[1])))
-    return load, tangent, energy
-
-
 def _state(joints, j, q):
     """Bearing load (3,) and tangent stiffness (3, 3) of joint j at positions q: with numpy for rigid rings, with
     the compiled :func:`.slewing_balls.ball_state` for flexible ones (no numpy twin of the sectors' relaxation)."""
     i = 3 * joints.body[j]
     if joints.flexible[j]:
-        return _flexible_state(joints, j, q[i:i + 3] - joints.reference[j])[:2]
+        return _flexible_joint(joints, j, q[i:i + 3] - joints.reference[j])[:2]
     load, tangent, _, _ = bearing_state(joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j],
                                         joints.contact_angle[j], joints.stiffness[j], q[i:i + 3] - joints.reference[j])
     return load, tangent
@@ -208,7 +202,7 @@ def potential_energy(joints, position, pair_output):
     for j in range(joints.body.size):
         i = 3 * joints.body[j]
         if joints.flexible[j]:  # the balls' and the ring sectors' energy
-            energy += [_flexible_state(joints, j, x - joints.reference[j])[2] for x in position[:, i:i + 3]]
+            energy += [_flexible_joint(joints, j, x - joints.reference[j])[2] for x in position[:, i:i + 3]]
             continue
         s_r, s_z = centre_separations(joints.balls[j], joints.pitch_radius[j], joints.centre_distance[j],
                                       joints.contact_angle[j], position[:, i:i + 3] - joints.reference[j])
@@ -235,9 +229,7 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
         tangent = np.zeros((3, 3))
         rate_term = np.zeros((3, 3))
         if joints.flexible[j]:  # the tangent of the relaxed sectors; the damping's rate term is left out
-            _, _, _, k00, k01, k02, k11, k12, k22 = _flexible_sums(joints, j, displacement[0], displacement[1],
-                                                                    displacement[2])
-            tangent = np.array([[k00, k01, k02], [k01, k11, k12], [k02, k12, k22]])
+            _, tangent, _ = _flexible_joint(joints, j, displacement)
             balls = 0
         for n in range(balls):
             c = math.cos(2.0 * math.pi * n / balls)
