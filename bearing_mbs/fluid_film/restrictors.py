@@ -121,5 +121,11 @@ class DirectSupply:
         raise TypeError("a directly supplied recess has a fixed pressure, not an inflow law")
 
 
+def feeds_oil(kind: type, supply_pressure: float) -> bool:
+    """Whether a recess fed through a restrictor of this ``kind`` (class) from ``supply_pressure`` [Pa] brings oil
+    into the film: held at its supply pressure (a groove), fed a constant flow, or fed from above ambient."""
+    return issubclass(kind, DirectSupply | ConstantFlow) or supply_pressure > 0
+
+
 #: Restrictor kinds by their ``restrictor`` name in a scenario.
 RESTRICTORS = {"capillary": Capillary, "orifice": Orifice, "constant_flow": ConstantFlow, "none": DirectSupply}

@@ -39,7 +39,7 @@ from scipy.sparse.linalg import MatrixRankWarning, spsolve
 
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
 from bearing_mbs.fluid_film.newton import solve_balance
-from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply
+from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply, feeds_oil
 
 #: Cavitation models by name.
 CAVITATION = ("gumbel", "jfo")
@@ -319,10 +319,8 @@ def _globalised(balance, supply, bearing, recess, fixed, cavitating: bool):
 
 
 def _has_oil_source(grid: FilmGrid, supply: Supply | None) -> bool:
-    """Whether oil enters the film: recesses held at their supply pressure or fed a constant flow, or fed through a
-    restrictor from a supply pressure above ambient."""
-    return bool(grid.recess_count) and (isinstance(supply.restrictor, DirectSupply | ConstantFlow)
-                                        or supply.pressure > 0)
+    """Whether oil enters the film: it has recesses, and their supply feeds them (:func:`.restrictors.feeds_oil`)."""
+    return bool(grid.recess_count) and feeds_oil(type(supply.restrictor), supply.pressure)
 
 
 def _linear_restrictor(supply: Supply | None) -> bool:

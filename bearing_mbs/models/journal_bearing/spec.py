@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from bearing_mbs.contact.lubricant import Lubricant, LubricantError
 from bearing_mbs.fluid_film.design import recess_outflow
 from bearing_mbs.fluid_film.journal import MAX_CELLS, FilmGrid, JournalBearing, Recesses
-from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS, capillary_bore
+from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS, capillary_bore, feeds_oil
 from bearing_mbs.fluid_film.reynolds import CAVITATION
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import finite, in_range, non_negative, one_of, positive, require
@@ -187,7 +187,7 @@ class JournalSection:
                 self._check_sized_capillary()
         if self.cavitation == "jfo":
             r = self.recesses
-            require(r is not None and (r.restrictor in ("none", "constant_flow") or r.supply_pressure > 0), "cavitation",
+            require(r is not None and feeds_oil(RESTRICTORS[r.restrictor], r.supply_pressure), "cavitation",
                     self.cavitation, "'gumbel' unless the film has an oil source: the mass-conserving film fixes how "
                     "much oil it holds from what enters it, and with none (a plain bore, or recesses whose restrictors "
                     "feed from a supply pressure of 0) every cavitated film with ϑh constant along the bore solves it "
