@@ -155,3 +155,11 @@ def _viscosity_factor(pressure: float) -> float:
         return math.exp(PRESSURE_VISCOSITY * pressure)
     except OverflowError:
         return math.inf
+
+
+def speed_equilibria(rows: list[dict]) -> Check:
+    """Every speed of ``journal.coefficient_speeds_rpm`` found its equilibrium under the static load."""
+    missing = [row["speed_rpm"] for row in rows if row["eccentricity"] is None]
+    return upper_bound("speed_equilibria", len(missing), 0, "count",
+                       f"no equilibrium under journal.static_load at {missing} rpm. Likely fix: a smaller static_load "
+                       "or a higher speed (the film must carry it inside the clearance)")

@@ -16,7 +16,6 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.core.checks import upper_bound
 from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
 from bearing_mbs.fluid_film.design import sized_capillary, sized_orifice
@@ -30,6 +29,7 @@ from bearing_mbs.models.journal_bearing.checks import (
     journal_checks,
     largest_capillary_reynolds,
     mass_balance_error,
+    speed_equilibria,
     taylor_number,
 )
 from bearing_mbs.models.journal_bearing.spec import SIZED_BORE, JournalSpec
@@ -135,6 +135,9 @@ def _isothermal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
     stiff = static_stiffness(force, state, j.radial_clearance)
     h_min = float(grid.land_film(grid.theta, state.eccentricity).min())
     checks = journal_checks(spec, bearing, supply, grid, state, film, h_min)
+    speeds = coefficients_over_speed(force, j.radial_clearance, j.static_load, j.coefficient_speeds_rpm)
+    if speeds:
+        checks.append(speed_equilibria(speeds))
     summary = {
         "scenario": spec.scenario.name, "model": spec.scenario.model, **status_entries(checks),
         "cavitation": j.cavitation,
@@ -151,14 +154,8 @@ def _isothermal_summary(spec: JournalSpec) -> tuple[dict, FilmSolution, list]:
         "load_curve": [list(row) for row in curve],
         "taylor_number": taylor_number(j),
     }
-    if j.coefficient_speeds_rpm:
-        summary["coefficients_over_speed"] = coefficients_over_speed(force, j.radial_clearance, j.static_load,
-                                                                     j.coefficient_speeds_rpm)
-        missing = [row["speed_rpm"] for row in summary["coefficients_over_speed"] if row["eccentricity"] is None]
-        checks.append(upper_bound("speed_equilibria", len(missing), 0, "count",
-                                  f"no equilibrium under journal.static_load at {missing} rpm. Likely fix: a smaller "
-                                  "static_load or a higher speed (the film must carry it inside the clearance)"))
-        summary.update(status_entries(checks))
+    if speeds:
+        summary["coefficients_over_speed"] = speeds
     if j.recesses is not None and j.recesses.design_pressure_ratio is not None:
         summary["design_pressure_ratio"] = j.recesses.design_pressure_ratio
         summary["sized_bore"] = {SIZED_BORE[j.recesses.restrictor]: supply.restrictor.diameter}
