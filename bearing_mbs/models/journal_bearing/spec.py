@@ -4,15 +4,14 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from bearing_mbs.contact.lubricant import Lubricant, LubricantError
-from bearing_mbs.fluid_film.design import recess_outflow
-from bearing_mbs.fluid_film.journal import MAX_CELLS, FilmGrid, JournalBearing, Recesses
-from bearing_mbs.fluid_film.restrictors import CAPILLARY_MIN_ASPECT, RESTRICTORS, capillary_bore, feeds_oil
+from bearing_mbs.fluid_film.journal import MAX_CELLS, JournalBearing
 from bearing_mbs.fluid_film.reynolds import CAVITATION
 from bearing_mbs.spec import Spec, SpecError
-from bearing_mbs.spec.fields import finite, in_range, non_negative, one_of, positive, require
+from bearing_mbs.spec.fields import finite, in_range, one_of, positive, require
+from bearing_mbs.spec.recesses import RecessSection
 
 #: The ``[scenario] model`` value of a journal-bearing scenario.
 MODEL_NAME = "journal_bearing"
@@ -21,69 +20,6 @@ MODEL_NAME = "journal_bearing"
 THERMAL = ("isothermal", "effective")
 #: The oil's density [kg/m³] when the scenario gives neither ``density`` nor an oil (document 001, Table 2).
 DENSITY = 860.0
-
-#: What each restrictor needs besides the supply pressure.
-RESTRICTOR_KEYS = {"capillary": ("capillary_length", "capillary_diameter"), "orifice": ("orifice_diameter",),
-                   "constant_flow": ("flow",), "none": ()}
-#: The bore a design pressure ratio sizes, by restrictor.
-SIZED_BORE = {"capillary": "capillary_diameter", "orifice": "orifice_diameter"}
-
-
-@dataclass(frozen=True)
-class RecessSection:
-    """``[journal.recesses]``: count >= 1 recesses of angular_width [deg] (together less than 360°; one recess of
-    360° is a circumferential groove) by axial_length [m] (<= the bearing length), depth [m] > 0, the first
-    centred at first_angle [deg]; supply_pressure [Pa] >= 0 through a restrictor: ``capillary``
-    (capillary_length, capillary_diameter [m], at least 20 bores long), ``orifice`` (orifice_diameter [m],
-    discharge_coefficient in (0, 1]), ``constant_flow`` (flow [m³/s] per recess) or ``none`` (the recess is held at
-    the supply pressure: a supply groove); design_pressure_ratio β in (0, 1), optional, with a capillary or an
-    orifice: its bore is then sized so that the centred recesses sit at β × supply_pressure
-    (:mod:`bearing_mbs.fluid_film.design`), and capillary_diameter or orifice_diameter must be left out."""
-
-    count: int
-    angular_width: float
-    axial_length: float
-    depth: float
-    supply_pressure: float
-    restrictor: str = "capillary"
-    first_angle: float = 0.0
-    capillary_length: float | None = None
-    capillary_diameter: float | None = None
-    orifice_diameter: float | None = None
-    discharge_coefficient: float = 0.6
-    flow: float | None = None
-    design_pressure_ratio: float | None = None
-
-    def __post_init__(self):
-        require(isinstance(self.count, int) and self.count >= 1, "count", self.count, "an integer >= 1")
-        widest = 360.0 if self.count == 1 else 360.0 / self.count
-        in_range("angular_width", self.angular_width, 0.0, widest, "deg", low_open=True, high_open=self.count > 1)
-        positive("axial_length", self.axial_length)
-        positive("depth", self.depth)
-        non_negative("supply_pressure", self.supply_pressure)
-        one_of("restrictor", self.restrictor, tuple(RESTRICTORS))
-        in_range("first_angle", self.first_angle, -360.0, 360.0, "deg")
-        sized = None
-        if self.design_pressure_ratio is not None:
-            in_range("design_pressure_ratio", self.design_pressure_ratio, 0.0, 1.0, "-", low_open=True, high_open=True)
-            require(self.restrictor in SIZED_BORE, "design_pressure_ratio", self.design_pressure_ratio,
-                    f"only with restrictor = 'capillary' or 'orifice' (here {self.restrictor!r})")
-            require(self.supply_pressure > 0, "design_pressure_ratio", self.design_pressure_ratio,
-                    "only with supply_pressure > 0 (a ratio of nothing sizes nothing)")
-            sized = SIZED_BORE[self.restrictor]
-            require(getattr(self, sized) is None, sized, getattr(self, sized),
-                    "left out with design_pressure_ratio: the bore is sized for it")
-        for name in RESTRICTOR_KEYS[self.restrictor]:
-            if name == sized:
-                continue
-            require(getattr(self, name) is not None, name, None, f"required by restrictor = {self.restrictor!r}")
-            positive(name, getattr(self, name))
-        in_range("discharge_coefficient", self.discharge_coefficient, 0.0, 1.0, "-", low_open=True)
-        if self.restrictor == "capillary" and sized is None:
-            require(self.capillary_length >= CAPILLARY_MIN_ASPECT * self.capillary_diameter, "capillary_length",
-                    self.capillary_length, f">= {CAPILLARY_MIN_ASPECT:g} × capillary_diameter = "
-                    f"{CAPILLARY_MIN_ASPECT * self.capillary_diameter:g} m (laminar, developed flow)")
-
 
 @dataclass(frozen=True)
 class OilSection:
@@ -180,14 +116,10 @@ class JournalSection:
         require(self.grid[0] * self.grid[1] <= MAX_CELLS, "grid", list(self.grid),
                 f"at most {MAX_CELLS} cells (n_theta × n_z)")
         if self.recesses is not None:
-            require(self.recesses.axial_length <= self.length, "recesses.axial_length", self.recesses.axial_length,
-                    f"<= length = {self.length:g} m")
-            self._check_recesses_resolved()
-            if self.recesses.design_pressure_ratio is not None and self.recesses.restrictor == "capillary":
-                self._check_sized_capillary()
+            self.recesses.check_fits(self.bore(), self.grid)
         if self.cavitation == "jfo":
             r = self.recesses
-            require(r is not None and feeds_oil(RESTRICTORS[r.restrictor], r.supply_pressure), "cavitation",
+            require(r is not None and r.feeds_oil, "cavitation",
                     self.cavitation, "'gumbel' unless the film has an oil source: the mass-conserving film fixes how "
                     "much oil it holds from what enters it, and with none (a plain bore, or recesses whose restrictors "
                     "feed from a supply pressure of 0) every cavitated film with ϑh constant along the bore solves it "
@@ -208,32 +140,13 @@ class JournalSection:
             return DENSITY if self.density is None else self.density
         return self.oil.lubricant().density(self.oil.inlet_temperature)
 
+    def bore(self) -> JournalBearing:
+        """The bore without its recesses."""
+        return JournalBearing(self.diameter, self.length, self.radial_clearance, self.oil_viscosity, self.oil_density)
+
     def bearing(self) -> JournalBearing:
         """The bore and its recesses (without their supply)."""
-        r = self.recesses
-        return JournalBearing(self.diameter, self.length, self.radial_clearance, self.oil_viscosity, self.oil_density,
-                              None if r is None else Recesses(r.count, r.angular_width, r.axial_length, r.depth,
-                                                              r.first_angle))
-
-    def _check_recesses_resolved(self):
-        """Every recess holds a cell centre of the grid (a recess of no cell has no balance: a singular system)."""
-        r = self.recesses
-        empty = [k + 1 for k, area in enumerate(FilmGrid.build(self.bearing(), *self.grid).recess_areas) if area == 0]
-        n_theta, n_z = self.grid
-        require(not empty, "grid", list(self.grid),
-                f"cells fine enough that every recess holds a cell centre: recess {empty[0] if empty else ''} "
-                f"({r.angular_width:g} deg × {r.axial_length:g} m) holds none of the cells of {360 / n_theta:g} deg × "
-                f"{self.length / n_z:g} m; refine the grid")
-
-    def _check_sized_capillary(self):
-        """The capillary sized for the design pressure ratio is long enough for laminar, developed flow."""
-        r = self.recesses
-        flow = recess_outflow(self.bearing(), r.design_pressure_ratio * r.supply_pressure, self.grid)
-        bore = capillary_bore(r.capillary_length, flow, (1 - r.design_pressure_ratio) * r.supply_pressure,
-                              self.oil_viscosity)
-        require(r.capillary_length >= CAPILLARY_MIN_ASPECT * bore, "recesses.design_pressure_ratio",
-                r.design_pressure_ratio, f"a ratio whose capillary (bore {bore:g} m) is at least {CAPILLARY_MIN_ASPECT:g} "
-                f"bores long: a capillary_length >= {CAPILLARY_MIN_ASPECT * bore:g} m, or another ratio")
+        return replace(self.bore(), recesses=None if self.recesses is None else self.recesses.recesses())
 
     @property
     def speed(self) -> float:

@@ -18,10 +18,9 @@ import numpy as np
 
 from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients, static_stiffness
-from bearing_mbs.fluid_film.design import sized_capillary, sized_orifice
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
 from bearing_mbs.fluid_film.network import network_recess_pressures
-from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply, Orifice, capillary_resistance
+from bearing_mbs.fluid_film.restrictors import Capillary, capillary_resistance
 from bearing_mbs.fluid_film.reynolds import FilmNotConverged, FilmSolution, JournalState, Supply, solve_film
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import json_safe, rounded, write_json
@@ -32,11 +31,12 @@ from bearing_mbs.models.journal_bearing.checks import (
     speed_equilibria,
     taylor_number,
 )
-from bearing_mbs.models.journal_bearing.spec import SIZED_BORE, JournalSpec
+from bearing_mbs.models.journal_bearing.spec import JournalSpec
 from bearing_mbs.models.journal_bearing.speeds import UNITS as SPEED_UNITS
 from bearing_mbs.models.journal_bearing.speeds import coefficients_over_speed, write_table
 from bearing_mbs.models.journal_bearing.speeds import plot as plot_speeds
 from bearing_mbs.models.journal_bearing.thermal import effective_film
+from bearing_mbs.spec.recesses import SIZED_BORE
 
 SUMMARY_FILE = "summary.json"
 #: Eccentricity ratios of the load curve.
@@ -51,20 +51,8 @@ UNITS = {"load_capacity": "N", "force": "N", "attitude_angle": "deg", "flow": "m
 
 
 def bearing_of(spec: JournalSpec) -> tuple[JournalBearing, Supply | None]:
-    j, r = spec.journal, spec.journal.recesses
-    bearing = j.bearing()
-    if r is None:
-        return bearing, None
-    if r.design_pressure_ratio is not None:
-        restrictor = (sized_capillary(bearing, r.supply_pressure, r.design_pressure_ratio, r.capillary_length, j.grid)
-                      if r.restrictor == "capillary" else
-                      sized_orifice(bearing, r.supply_pressure, r.design_pressure_ratio, r.discharge_coefficient,
-                                    j.grid))
-        return bearing, Supply(r.supply_pressure, restrictor)
-    restrictor = {"capillary": lambda: Capillary(r.capillary_length, r.capillary_diameter),
-                  "orifice": lambda: Orifice(r.orifice_diameter, r.discharge_coefficient),
-                  "constant_flow": lambda: ConstantFlow(r.flow), "none": DirectSupply}[r.restrictor]()
-    return bearing, Supply(r.supply_pressure, restrictor)
+    j = spec.journal
+    return j.bearing(), None if j.recesses is None else j.recesses.supply(j.bearing(), j.grid)
 
 
 def state_at(spec: JournalSpec, eccentricity_ratio: float) -> JournalState:
