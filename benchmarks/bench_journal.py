@@ -4,6 +4,9 @@
   (the issue's target: ≤ 20 ms on the 2-core machine);
 * ``static_solve_240x60``: the same on the command's default grid;
 * ``static_solve_jfo_1000rpm``: the same bearing at 1000 rpm with mass-conserving cavitation (active set);
+* ``film_force_recessed_map``: one force evaluation of the hybrid spindle's recessed-bearing force map
+  (``seed_hybrid_spindle.toml`` at 20 000 rpm, two bearings, 60 × 16 cells) in the reference engine's time loop (the
+  issue's target: ≤ 10 µs); ``recessed_map_build``: building that map;
 * ``short_bearing_force``: one call of the dynamic short-bearing closed form from Python (numpy);
 * ``film_force_<source>``: one force evaluation inside the reference engine's time loop (its RK4 run's wall time
   divided by its force evaluations: journal bearings, servo, unbalance and the integrator's own work) with the
@@ -19,6 +22,7 @@ Ratios are to the 120 × 30 solve in the same run.
 from __future__ import annotations
 
 import math
+import time
 
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
@@ -68,6 +72,14 @@ def main() -> dict:
             figures[f"whirl_second_{source}_{engine}"] = stats.wall_time_s / 0.5
             if engine == "reference":
                 figures[f"film_force_{source}"] = stats.wall_time_s / stats.force_evaluations
+    spindle = load_spec(SCENARIOS / "seed_hybrid_spindle.toml", ["drive.speed_rpm=20000", "drive.start_rpm=20000",
+                                                                  "drive.ramp_time=0", "solver.engine=reference"])
+    began = time.perf_counter()
+    scene = build_scene(spindle)
+    figures["recessed_map_build"] = time.perf_counter() - began
+    simulate(scene, spindle.solver, 0.001)
+    stats = simulate(scene, spindle.solver, 0.1).stats
+    figures["film_force_recessed_map"] = stats.wall_time_s / stats.force_evaluations
     spec = load_spec(SCENARIOS / "seed_rotor_whirl.toml", whirl + ["bearing.grid=[60, 16]"])
     figures["whirl_second_reynolds"] = reynolds_orbit(spec, np.linspace(0, 0.01, 11)).wall_time_s / 0.01
     ratios = {name: value / figures["static_solve_120x30"] for name, value in figures.items()}

@@ -286,17 +286,20 @@ def test_the_oil_films_jacobian_matches_finite_differences(kind, ground):
                                        err_msg=f"gap {gap}")
 
 
-@pytest.mark.parametrize("source", ["short", "map"])
-def test_the_journal_films_jacobian_matches_finite_differences(source):
-    """Journal films (short bearing, and a force map of random tables) at eccentricities inside the clearance
+@pytest.mark.parametrize("source, recessed", [("short", False), ("map", False), ("map", True)])
+def test_the_journal_films_jacobian_matches_finite_differences(source, recessed):
+    """Journal films (short bearing, and force maps of random tables: a plain bearing's over ε and β, a recessed
+    one's over ε, the direction to the recesses, the hydrodynamic share and β) at eccentricities inside the clearance
     and beyond the largest one evaluated (held there, so only the direction acts), both directions of whirl."""
     from bearing_mbs.elements import journal_bearings
     from bearing_mbs.elements.journal_bearings import JournalFilm
 
     rng = np.random.default_rng(40)
     clearance = 2.5e-4
-    tables = {"map_normal": rng.normal(size=(12, 16)), "map_tangential": rng.normal(size=(12, 16)),
-              "map_step": 0.09} if source == "map" else {}
+    shape, axes = ((12, 5, 7, 16), [0.09, np.pi / 10, 0.3, np.pi / 12, 40.0, 1.0]) if recessed else \
+        ((12, 1, 1, 16), [0.09, 2 * np.pi, 0.0, 1.0, 1.0, 0.0])
+    tables = {"map_normal": rng.normal(size=shape), "map_tangential": rng.normal(size=shape),
+              "map_linear": rng.normal(size=(*shape[:2], 3, 2)), "map_axes": np.array(axes)} if source == "map" else {}
     films = [JournalFilm(f"j{b}", b, 1 + b % 2, 0.12, 0.03 + 0.01 * b, clearance, 0.05, tuple(rng.normal(size=2)),
                          source=source, **tables) for b in range(BODIES - 1)]
     parameters = journal_bearings.pack(films)

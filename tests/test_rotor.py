@@ -25,7 +25,8 @@ from bearing_mbs.fluid_film.closed_forms import short_bearing_force
 from bearing_mbs.fluid_film.coefficients import dynamic_coefficients
 from bearing_mbs.fluid_film.reynolds import JournalState
 from bearing_mbs.models import build_scene, load_spec
-from bearing_mbs.models.rotor.build import equilibrium, film_force, growth_rate, map_error, whirl_threshold
+from bearing_mbs.models.rotor.build import equilibrium, film_force, map_error
+from bearing_mbs.models.rotor.linear import growth_rate, whirl_threshold
 from bearing_mbs.models.rotor.metrics import rotor_metrics
 from bearing_mbs.runner import run_spec
 from bearing_mbs.spec import SpecError

@@ -23,6 +23,7 @@ from typing import NamedTuple
 
 import numba
 import numpy as np
+from numba.extending import register_jitable
 
 from bearing_mbs.core.force_element import ForceElement
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_force_jacobian, short_bearing_torque
@@ -38,8 +39,8 @@ LARGEST_ECCENTRICITY = 0.999
 class JournalFilm:
     """``count`` identical journal bearings between the ground and ``body``: radius R, length L, radial clearance C [m],
     viscosity μ [Pa s], centre (x, y) [m] of the bore; ``source`` ``short`` or ``map`` (then ``map_normal`` and
-    ``map_tangential``, tables of :class:`~bearing_mbs.fluid_film.force_map.ForceMap`, and ``map_step`` its ε
-    step)."""
+    ``map_tangential``, ``map_linear``, tables of :class:`~bearing_mbs.fluid_film.force_map.ForceMap`, and
+    ``map_axes`` its axes)."""
 
     name: str
     body: int
@@ -50,9 +51,11 @@ class JournalFilm:
     viscosity: float
     centre: tuple[float, float] = (0.0, 0.0)
     source: str = "short"
-    map_normal: np.ndarray = field(default_factory=lambda: np.zeros((2, 1)), compare=False)
-    map_tangential: np.ndarray = field(default_factory=lambda: np.zeros((2, 1)), compare=False)
-    map_step: float = 1.0
+    map_normal: np.ndarray = field(default_factory=lambda: np.zeros((2, 1, 1, 1)), compare=False)
+    map_tangential: np.ndarray = field(default_factory=lambda: np.zeros((2, 1, 1, 1)), compare=False)
+    map_linear: np.ndarray = field(default_factory=lambda: np.zeros((2, 1, 3, 2)), compare=False)
+    map_axes: np.ndarray = field(default_factory=lambda: np.array([1.0, 2 * math.pi, 0.0, 1.0, 1.0, 0.0]),
+                                 compare=False)
 
 
 class JournalFilmArrays(NamedTuple):
@@ -61,27 +64,39 @@ class JournalFilmArrays(NamedTuple):
     geometry: np.ndarray  # (J, 4): R, L, C [m], μ [Pa s]
     centre: np.ndarray  # (J, 2) [m]
     source: np.ndarray  # (J,) int64, index into SOURCES
-    map_shape: np.ndarray  # (J, 2) int64: rows, columns of each item's tables
-    map_step: np.ndarray  # (J,)
-    map_normal: np.ndarray  # (J, rows, columns), zero-padded
-    map_tangential: np.ndarray  # (J, rows, columns)
+    map_shape: np.ndarray  # (J, 4) int64: each item's table shape (ε, φ, γ, β)
+    map_axes: np.ndarray  # (J, 6): bearing_mbs.fluid_film.force_map.AXES
+    map_normal: np.ndarray  # (J, ε, φ, γ, β), zero-padded
+    map_tangential: np.ndarray  # (J, ε, φ, γ, β)
+    map_linear: np.ndarray  # (J, ε, φ, 3, 2)
 
 
 def pack(films) -> JournalFilmArrays:
-    shapes = np.array([f.map_normal.shape for f in films], dtype=np.int64).reshape(-1, 2)
-    rows, columns = shapes.max(axis=0) if len(films) else (1, 1)
-    normal, tangential = np.zeros((len(films), rows, columns)), np.zeros((len(films), rows, columns))
+    shapes = np.array([f.map_normal.shape for f in films], dtype=np.int64).reshape(-1, 4)
+    largest = tuple(shapes.max(axis=0)) if len(films) else (1, 1, 1, 1)
+    normal, tangential = np.zeros((len(films), *largest)), np.zeros((len(films), *largest))
+    linear = np.zeros((len(films), *largest[:2], 3, 2))
     for j, f in enumerate(films):
-        normal[j, : shapes[j, 0], : shapes[j, 1]] = f.map_normal
-        tangential[j, : shapes[j, 0], : shapes[j, 1]] = f.map_tangential
+        within = (j, *(slice(0, size) for size in shapes[j]))
+        normal[within], tangential[within] = f.map_normal, f.map_tangential
+        linear[within[:3]] = f.map_linear
     return JournalFilmArrays(
         body=np.array([f.body for f in films], dtype=np.int64),
         count=np.array([f.count for f in films], dtype=float),
         geometry=np.array([[f.radius, f.length, f.clearance, f.viscosity] for f in films], dtype=float).reshape(-1, 4),
         centre=np.array([f.centre for f in films], dtype=float).reshape(-1, 2),
         source=np.array([SOURCES.index(f.source) for f in films], dtype=np.int64),
-        map_shape=shapes, map_step=np.array([f.map_step for f in films], dtype=float),
-        map_normal=normal, map_tangential=tangential)
+        map_shape=shapes, map_axes=np.array([f.map_axes for f in films], dtype=float).reshape(-1, 6),
+        map_normal=normal, map_tangential=tangential, map_linear=linear)
+
+
+@register_jitable
+def _tables(films, j):
+    """Item j's force-map tables (normal, tangential, linear), without the padding."""
+    rows, columns, shares, directions = films.map_shape[j, 0], films.map_shape[j, 1], films.map_shape[j, 2], \
+        films.map_shape[j, 3]
+    return (films.map_normal[j, :rows, :columns, :shares, :directions],
+            films.map_tangential[j, :rows, :columns, :shares, :directions], films.map_linear[j, :rows, :columns])
 
 
 @numba.njit(cache=True)
@@ -98,9 +113,8 @@ def film_load(films, j, q, v):
     if films.source[j] == 0:
         f_x, f_y = short_bearing_force(e_x, e_y, v[i], v[i + 1], speed, radius, length, clearance, viscosity)
     else:
-        rows, columns = films.map_shape[j, 0], films.map_shape[j, 1]
-        f_x, f_y = map_force(films.map_normal[j, :rows, :columns], films.map_tangential[j, :rows, :columns],
-                             films.map_step[j], e_x, e_y, v[i], v[i + 1], speed, clearance)
+        normal, tangential, linear = _tables(films, j)
+        f_x, f_y = map_force(normal, tangential, linear, films.map_axes[j], e_x, e_y, v[i], v[i + 1], speed, clearance)
     torque = short_bearing_torque(eps, speed, radius, length, clearance, viscosity)
     return films.count[j] * f_x, films.count[j] * f_y, films.count[j] * torque
 
@@ -129,9 +143,7 @@ def add_forces_twin(films, t, q, v, latched, forces, pair_out, power, complete):
         if SOURCES[films.source[j]] == "short":
             force = short_bearing_force(*e, *velocity, speed, radius, length, clearance, viscosity)
         else:
-            rows, columns = films.map_shape[j]
-            force = map_force(films.map_normal[j, :rows, :columns], films.map_tangential[j, :rows, :columns],
-                                      films.map_step[j], *e, *velocity, speed, clearance)
+            force = map_force(*_tables(films, j), films.map_axes[j], *e, *velocity, speed, clearance)
         torque = short_bearing_torque(eps, speed, radius, length, clearance, viscosity)
         load = films.count[j] * np.array([*force, torque])
         forces[3 * body : 3 * body + 3] += load
@@ -163,9 +175,9 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
             slopes = short_bearing_force_jacobian(e_x, e_y, v[i], v[i + 1], speed, radius, length, clearance,
                                                   viscosity)
         else:
-            rows, columns = films.map_shape[j, 0], films.map_shape[j, 1]
-            slopes = map_force_jacobian(films.map_normal[j, :rows, :columns], films.map_tangential[j, :rows, :columns],
-                                        films.map_step[j], e_x, e_y, v[i], v[i + 1], speed, clearance)
+            normal, tangential, linear = _tables(films, j)
+            slopes = map_force_jacobian(normal, tangential, linear, films.map_axes[j], e_x, e_y, v[i], v[i + 1], speed,
+                                        clearance)
         count = films.count[j]
         for r in range(2):
             for c in range(2):

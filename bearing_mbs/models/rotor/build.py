@@ -1,13 +1,11 @@
-"""The rotor's scene, its film force, static equilibrium and linearised whirl threshold.
+"""The rotor's scene, its film force and its static equilibrium.
 
 One planar body (x, y: the journal centre relative to the bearings' centre; θ: the spin) on ``bearings`` identical
 :class:`~bearing_mbs.elements.journal_bearings.JournalFilm` bearings, driven by a velocity servo, with an optional
 :class:`~bearing_mbs.elements.unbalances.Unbalance`. It starts at the static equilibrium of the start speed plus
 ``initial_offset``.
 
-The whirl threshold (:func:`whirl_threshold`) is the lowest speed at which the rotor's small motions about its
-equilibrium grow: the eigenvalues of :math:`M\\ddot x + C\\dot x + K x = 0`, with K and C the bearings' linearised
-coefficients (:mod:`bearing_mbs.fluid_film.coefficients`), cross the imaginary axis.
+The rotor linearised about this equilibrium is :mod:`.linear`'s.
 """
 
 from __future__ import annotations
@@ -16,7 +14,6 @@ import math
 from functools import lru_cache
 
 import numpy as np
-from scipy.optimize import brentq
 
 from bearing_mbs.core.scene import Body, Profile, Scene
 from bearing_mbs.core.topology import Topology
@@ -24,33 +21,41 @@ from bearing_mbs.elements import VelocityServo
 from bearing_mbs.elements.journal_bearings import JournalFilm
 from bearing_mbs.elements.unbalances import Unbalance
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force
-from bearing_mbs.fluid_film.coefficients import dynamic_coefficients
 from bearing_mbs.fluid_film.equilibrium import film_equilibrium
-from bearing_mbs.fluid_film.force_map import build_force_map, interpolation_error, map_force
-from bearing_mbs.fluid_film.journal import JournalBearing
-from bearing_mbs.fluid_film.reynolds import JournalState
-from bearing_mbs.models.rotor.spec import RotorSpec
+from bearing_mbs.fluid_film.force_map import ForceMap, build_force_map, interpolation_error, map_forces
+from bearing_mbs.fluid_film.journal import FilmGrid
+from bearing_mbs.fluid_film.reynolds import JournalState, solve_film
+from bearing_mbs.models.rotor.spec import BearingSection, RotorSpec
 from bearing_mbs.spec import SpecError
 
 
-def plain_bearing(spec: RotorSpec) -> JournalBearing:
-    b = spec.bearing
-    return JournalBearing(b.diameter, b.length, b.radial_clearance, b.viscosity)
-
-
 @lru_cache(maxsize=8)
-def _force_map(diameter, length, clearance, viscosity, grid):
-    return build_force_map(JournalBearing(diameter, length, clearance, viscosity), grid)
+def _force_map(section: BearingSection) -> ForceMap:
+    return build_force_map(section.bearing(), tuple(section.grid), section.supply())
 
 
-def force_map_of(spec: RotorSpec):
-    b = spec.bearing
-    return _force_map(b.diameter, b.length, b.radial_clearance, b.viscosity, tuple(b.grid))
+def force_map_of(spec: RotorSpec) -> ForceMap:
+    return _force_map(spec.bearing)
 
 
 def map_error(spec: RotorSpec) -> float:
     """The force map's largest interpolation error (:func:`~bearing_mbs.fluid_film.force_map.interpolation_error`)."""
-    return interpolation_error(plain_bearing(spec), force_map_of(spec), tuple(spec.bearing.grid))
+    b = spec.bearing
+    return interpolation_error(b.bearing(), force_map_of(spec), tuple(b.grid), b.supply())
+
+
+def map_orbit_error(spec: RotorSpec, centres: np.ndarray, velocities: np.ndarray) -> float:
+    """The largest |F_map − F_solve| / |F_solve| of the force map against a Reynolds solve (Gümbel, the map's grid
+    and supply) at the journal states (centre (x, y) [m]; velocity (ẋ, ẏ) [m/s] and spin [rad/s]) of a run."""
+    b, table = spec.bearing, force_map_of(spec)
+    bearing, supply, grid = b.bearing(), b.supply(), FilmGrid.build(b.bearing(), *b.grid)
+    states = np.column_stack([centres, velocities])
+    mapped = map_forces(table.normal, table.tangential, table.linear, table.axes, states, b.radial_clearance)
+    worst = 0.0
+    for state, force in zip(states, mapped, strict=True):
+        solved = solve_film(bearing, JournalState(tuple(state[:2]), tuple(state[2:4]), state[4]), supply, grid).force
+        worst = max(worst, float(np.hypot(*(force - solved)) / np.hypot(*solved)))
+    return worst
 
 
 def film_force(spec: RotorSpec):
@@ -65,9 +70,9 @@ def film_force(spec: RotorSpec):
         table = force_map_of(spec)
 
         def force(state: JournalState):
-            return count * np.array(map_force(table.normal, table.tangential, table.eccentricity_step,
-                                                      *state.eccentricity, *state.eccentricity_rate, state.speed,
-                                                      b.radial_clearance))
+            states = np.array([[*state.eccentricity, *state.eccentricity_rate, state.speed]])
+            return count * map_forces(table.normal, table.tangential, table.linear, table.axes, states,
+                                      b.radial_clearance)[0]
     return force
 
 
@@ -80,31 +85,6 @@ def equilibrium(spec: RotorSpec, speed: float) -> np.ndarray:
         raise SpecError("drive.start_rpm", speed * 30 / math.pi,
                         "a speed at which the bearings carry the rotor's weight (no film equilibrium found below ε = 1)")
     return found
-
-
-def growth_rate(spec: RotorSpec, speed: float) -> float:
-    """The largest real part [1/s] of the linearised rotor's eigenvalues about its equilibrium at Ω [rad/s]."""
-    state = JournalState(tuple(equilibrium(spec, speed)), (0.0, 0.0), speed)
-    stiffness, damping = dynamic_coefficients(film_force(spec), state, spec.bearing.radial_clearance)
-    mass = spec.rotor.mass
-    system = np.block([[np.zeros((2, 2)), np.eye(2)], [-stiffness / mass, -damping / mass]])
-    return float(np.linalg.eigvals(system).real.max())
-
-
-def whirl_threshold(spec: RotorSpec, low_rpm: float = 100.0, high_rpm: float = 1e5) -> float | None:
-    """The lowest speed [rpm] in [low, high] at which the linearised rotor becomes unstable (None if never); speeds
-    too low for the films to carry the rotor are skipped."""
-    speeds = np.geomspace(low_rpm, high_rpm, 40) * math.pi / 30
-    rates = []
-    for speed in speeds:
-        try:
-            rates.append(growth_rate(spec, speed))
-        except SpecError:
-            rates.append(math.nan)
-    for k in range(1, len(speeds)):
-        if rates[k - 1] < 0 <= rates[k]:
-            return brentq(lambda s: growth_rate(spec, s), speeds[k - 1], speeds[k], xtol=1e-6) * 30 / math.pi
-    return None
 
 
 def speed_profile(spec: RotorSpec) -> Profile:
@@ -127,7 +107,8 @@ def build_rotor_scene(spec: RotorSpec) -> Scene:
             "clearance": b.radial_clearance, "viscosity": b.viscosity, "source": b.force}
     if b.force == "map":
         table = force_map_of(spec)
-        film.update(map_normal=table.normal, map_tangential=table.tangential, map_step=table.eccentricity_step)
+        film.update(map_normal=table.normal, map_tangential=table.tangential, map_linear=table.linear,
+                    map_axes=table.axes)
     forces = [JournalFilm(**film), VelocityServo("drive", 0, spec.drive.gain, speed_profile(spec))]
     if rotor.unbalance > 0:
         forces.append(Unbalance("unbalance", 0, rotor.unbalance))

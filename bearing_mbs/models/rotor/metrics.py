@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -10,7 +11,8 @@ from scipy.signal import find_peaks
 
 from bearing_mbs.fluid_film.journal import FILM_COLLAPSE
 from bearing_mbs.io.figures import new_figure, save_figure
-from bearing_mbs.models.rotor.build import equilibrium, map_error, whirl_threshold
+from bearing_mbs.models.rotor.build import equilibrium, map_error, map_orbit_error
+from bearing_mbs.models.rotor.linear import critical_speeds, unbalance_amplitude, whirl_threshold
 from bearing_mbs.models.rotor.spec import RotorSpec
 from bearing_mbs.spec import SpecError
 
@@ -18,11 +20,16 @@ from bearing_mbs.spec import SpecError
 LINEAR_ORBIT = 0.1
 #: Fewest output instants in the second half of a run for the orbit's spectrum (whirl_frequency_ratio): below, none.
 SPECTRUM_INSTANTS = 4
+#: Speed bins of a run-up's unbalance response.
+RESPONSE_BINS = 40
+#: Instants of a run at which the force map is compared with a Reynolds solve (map_orbit_error).
+ORBIT_SAMPLES = 24
 
 UNITS = {"equilibrium_eccentricity_ratio": "-", "mean_eccentricity_ratio": "-", "max_eccentricity_ratio": "-",
          "orbit_radius": "m", "orbit_amplitude": "m, m", "whirl_growth_rate": "1/s", "whirl_frequency_ratio": "-",
-         "linear_whirl_threshold_rpm": "rpm", "whirl_onset_rpm": "rpm",
-         "map_interpolation_error": "-"}
+         "linear_whirl_threshold_rpm": "rpm", "whirl_onset_rpm": "rpm", "plain_whirl_threshold_rpm": "rpm",
+         "map_interpolation_error": "-", "map_orbit_error": "-", "critical_speeds_rpm": "rpm",
+         "unbalance_response": "rpm, m, m"}
 
 
 def _journal(spec: RotorSpec, result):
@@ -103,9 +110,38 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
     }
     if spec.drive.ramp_time > 0 and spec.rotor.unbalance == 0:
         summary["whirl_onset_rpm"] = whirl_onset(spec, result.time, centre, spin)
+    if spec.bearing.recesses is not None:
+        plain = replace(spec, bearing=replace(spec.bearing, recesses=None), drive=replace(spec.drive, start_rpm=None))
+        summary["plain_whirl_threshold_rpm"] = whirl_threshold(plain)
+    if spec.drive.ramp_time > 0 and spec.rotor.unbalance > 0:
+        response = unbalance_response(spec, centre, spin)
+        summary["unbalance_response"] = response
+        summary["critical_speeds_rpm"] = critical_speeds(np.array(response["speed_rpm"]), np.array(response["linear"]))
     if spec.bearing.force == "map":
         summary["map_interpolation_error"] = map_error(spec)
+        samples = np.linspace(0, result.time.size - 1, ORBIT_SAMPLES).astype(int)
+        index = 3 * int(result.topology.body("rotor"))
+        summary["map_orbit_error"] = map_orbit_error(spec, result.position[samples, index: index + 2],
+                                                     result.velocity[samples, index: index + 3])
     return summary
+
+
+def unbalance_response(spec: RotorSpec, centre, spin) -> dict:
+    """A run-up's orbit amplitude against speed: in :data:`RESPONSE_BINS` speed bins, the largest distance [m] of the
+    journal from the equilibrium at its current speed (``measured``), beside the linear steady orbit's semi-major axis
+    at the bin's mid speed (``linear``, :func:`.linear.unbalance_amplitude`). Bins below the speed at which the films
+    carry the rotor are left out."""
+    edges = np.linspace(spin.min(), spin.max(), RESPONSE_BINS + 1)
+    middles = (edges[:-1] + edges[1:]) / 2
+    points = [carried_equilibrium(spec, s) for s in middles]
+    carried = [k for k, point in enumerate(points) if point is not None]
+    current = np.stack([np.interp(spin, middles[carried], np.array([points[k][i] for k in carried]))
+                        for i in range(2)], axis=1)
+    distance = np.hypot(*(centre - current).T)
+    bins = np.clip(np.searchsorted(edges, spin, side="right") - 1, 0, RESPONSE_BINS - 1)
+    measured = [float(distance[bins == k].max()) if np.any(bins == k) else math.nan for k in carried]
+    return {"speed_rpm": (middles[carried] * 30 / math.pi).tolist(), "measured": measured,
+            "linear": [unbalance_amplitude(spec, middles[k]) for k in carried]}
 
 
 def rotor_warnings(spec: RotorSpec, scene, result) -> list[str]:
@@ -136,4 +172,23 @@ def rotor_figures(spec: RotorSpec, scene, result, directory) -> list[Path]:
     history.set_xlabel("time [s]")
     history.set_ylabel("ε")
     figure.suptitle(f"{spec.scenario.name}: {spec.bearing.force} film force")
-    return [save_figure(figure, Path(directory) / "orbit.png", status_note=result.status_note)]
+    paths = [save_figure(figure, Path(directory) / "orbit.png", status_note=result.status_note)]
+    if spec.drive.ramp_time > 0 and spec.rotor.unbalance > 0:
+        paths.append(_response_figure(spec, unbalance_response(spec, centre, spin), result, directory))
+    return paths
+
+
+def _response_figure(spec: RotorSpec, response: dict, result, directory) -> Path:
+    figure, axes = new_figure(figsize=(7, 4.5))
+    speeds = np.array(response["speed_rpm"])
+    axes.semilogy(speeds, np.array(response["measured"]) * 1e6, "o-", ms=3, label="run-up: largest distance from "
+                  "the equilibrium")
+    axes.semilogy(speeds, np.array(response["linear"]) * 1e6, "k--", label="linearised rotor, steady unbalance orbit")
+    threshold = whirl_threshold(spec)
+    if threshold is not None and threshold <= speeds.max():
+        axes.axvline(threshold, color="C3", lw=0.8, label=f"whirl threshold {threshold:.0f} rpm")
+    axes.set_xlabel("speed [rpm]")
+    axes.set_ylabel("orbit amplitude [µm]")
+    axes.legend(loc="best")
+    axes.set_title(f"{spec.scenario.name}: unbalance {spec.rotor.unbalance:g} kg m")
+    return save_figure(figure, Path(directory) / "unbalance_response.png", status_note=result.status_note)

@@ -17,7 +17,7 @@ from scipy.integrate import solve_ivp
 
 from bearing_mbs.fluid_film.journal import FilmGrid
 from bearing_mbs.fluid_film.reynolds import JournalState, solve_film
-from bearing_mbs.models.rotor.build import equilibrium, plain_bearing
+from bearing_mbs.models.rotor.build import equilibrium
 from bearing_mbs.models.rotor.spec import RotorSpec
 
 
@@ -32,7 +32,7 @@ class ReferenceOrbit:
 
 
 def reynolds_orbit(spec: RotorSpec, times: np.ndarray, rtol: float = 1e-8) -> ReferenceOrbit:
-    bearing, rotor = plain_bearing(spec), spec.rotor
+    bearing, supply, rotor = spec.bearing.bearing(), spec.bearing.supply(), spec.rotor
     grid = FilmGrid.build(bearing, *spec.bearing.grid)
     speed = spec.drive.speed_rpm * math.pi / 30
     weight = np.array([0.0, -rotor.mass * spec.scenario.gravity])
@@ -41,7 +41,7 @@ def reynolds_orbit(spec: RotorSpec, times: np.ndarray, rtol: float = 1e-8) -> Re
     def rates(t, y):
         nonlocal solves
         solves += 1
-        film = solve_film(bearing, JournalState((y[0], y[1]), (y[2], y[3]), speed), grid=grid)
+        film = solve_film(bearing, JournalState((y[0], y[1]), (y[2], y[3]), speed), supply, grid)
         angle = speed * t
         unbalance = rotor.unbalance * speed**2 * np.array([math.cos(angle), math.sin(angle)])
         return [y[2], y[3], *((rotor.bearings * film.force + weight + unbalance) / rotor.mass)]
