@@ -4,9 +4,8 @@ The recessed bearing's force map (:mod:`bearing_mbs.fluid_film.force_map`) carri
 reference independent of the time integration:
 
 * the map against a Reynolds solve per evaluation at the states of a run (1 %, the issue's bound);
-* growth rates of transient runs at 0.95 and 1.05 of the linearised whirl threshold, both engines, against the
-  linearised rotor's eigenvalues (3 %; the issue's 2 % is not met at 1.05, see the test), and the whirl at half the
-  spin speed (Newkirk and Taylor 1925);
+* growth rates of transient runs at 0.95, 1 and 1.05 of the linearised whirl threshold, both engines, against the
+  linearised rotor's eigenvalues (2 %), and the whirl at half the spin speed (Newkirk and Taylor 1925);
 * the classical threshold of a rigid rotor on isotropic full films, Ω = 2 √(K/m) (the film's cross-coupling
   k_xy = C Ω/2 balances the direct damping at the half-speed whirl; Childs, *Turbomachinery Rotordynamics*, 1993,
   §3.7) with the hydrostatic stiffness K of a centred Reynolds solve (3 %: the hydrodynamic film adds a little
@@ -54,20 +53,22 @@ def _constant(rpm, *overrides):
 
 @pytest.mark.parametrize("engine", ["reference", "exudyn"])
 def test_whirl_growth_rates_match_the_linearised_rotor(engine):
+    """At 0.95 and 1.05 of the threshold the runs' rates (-4.55 / +4.76 1/s on both engines) are the linearised
+    eigenvalues' (-4.60 / +4.83) within 2 %; at the threshold itself the run's rate (-0.04 1/s) is within 2 % of
+    those rates' size from zero."""
     spec = load_spec(SPINDLE, [GRID])
     threshold = whirl_threshold(spec)
     rates = {}
-    for factor in (0.95, 1.05):
+    for factor in (0.95, 1.0, 1.05):
         rpm = factor * threshold
         _, _, metrics = _constant(rpm, "rotor.unbalance=0", "rotor.initial_offset=[1e-8, 0.0]",
                                   "scenario.end_time=0.3", f"solver.engine={engine}")
         rates[factor] = metrics["whirl_growth_rate"]
-        # measured on both engines: -4.53 / +4.70 1/s against -4.60 / +4.84 (1.5 %, 2.9 %); the issue asks 2 %: the
-        # linearisation's central difference (1e-3 C, 40 % of the equilibrium's 0.18 µm eccentricity) moves the
-        # unstable rate by 1.3 % (4.78 with 1e-4 C), docs/fluid-film.md
-        assert rates[factor] == pytest.approx(growth_rate(spec, rpm * math.pi / 30), rel=0.03), factor
         assert 0.45 < metrics["whirl_frequency_ratio"] < 0.55
+        if factor != 1.0:
+            assert rates[factor] == pytest.approx(growth_rate(spec, rpm * math.pi / 30), rel=0.02), factor
     assert rates[0.95] < 0 < rates[1.05]
+    assert abs(rates[1.0]) < 0.02 * rates[1.05]
 
 
 def test_threshold_is_twice_the_hydrostatic_natural_frequency():

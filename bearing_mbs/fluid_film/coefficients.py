@@ -13,8 +13,10 @@ eccentricity, the same derivative projected on the displacement.
 Near the wall the step shrinks with the film: :math:`\Delta e = \min(10^{-3} C,\ 10^{-2}(C - |e|))` (:func:`eccentricity_step`),
 so the perturbed journal stays inside the clearance for every ε < 1 and the step stays a fixed small fraction of the
 gap, the length over which the film's force changes (it grows as :math:`(1 - \varepsilon)^{-k}`, so a central
-difference's relative error is of order :math:`(\Delta e/(C - |e|))^2 = 10^{-4}` there). The step is Lund's
-wherever ε ≤ 0.9.
+difference's relative error is of order :math:`(\Delta e/(C - |e|))^2 = 10^{-4}` there). Near the centre it shrinks
+with the eccentricity, to :math:`10^{-2}|e|` (not below :math:`10^{-6} C`): a step of 10⁻³ C turns the line of
+centres of a hybrid bearing's equilibrium at |e| = 0.0025 C by 22°, and its whirl growth rate moved by 1.3 %. The step
+is Lund's wherever 0.1 ≤ ε ≤ 0.9.
 """
 
 from __future__ import annotations
@@ -30,12 +32,17 @@ from bearing_mbs.fluid_film.reynolds import JournalState
 PERTURBATION = 1e-3
 #: Largest step as a fraction of the remaining gap C − |e|: it keeps |e| + Δe < C, and binds above ε = 0.9.
 GAP_PERTURBATION = 1e-2
+#: Largest step as a fraction of the eccentricity |e| (binds below ε = 0.1), and the smallest step (of C).
+CENTRE_PERTURBATION = 1e-2
+SMALLEST_PERTURBATION = 1e-6
 
 
 def eccentricity_step(state: JournalState, clearance: float) -> float:
-    """Δe [m] = min(:data:`PERTURBATION` C, :data:`GAP_PERTURBATION` (C − |e|)) at ``state``, clearance C [m]."""
-    gap = clearance - math.hypot(*state.eccentricity)
-    return min(PERTURBATION * clearance, GAP_PERTURBATION * gap)
+    """Δe [m] = min(:data:`PERTURBATION` C, :data:`GAP_PERTURBATION` (C − |e|), max(:data:`CENTRE_PERTURBATION`
+    |e|, :data:`SMALLEST_PERTURBATION` C)) at ``state``, clearance C [m]."""
+    eccentricity = math.hypot(*state.eccentricity)
+    return min(PERTURBATION * clearance, GAP_PERTURBATION * (clearance - eccentricity),
+               max(CENTRE_PERTURBATION * eccentricity, SMALLEST_PERTURBATION * clearance))
 
 
 def dynamic_coefficients(force, state: JournalState, clearance: float) -> tuple[np.ndarray, np.ndarray]:
