@@ -24,10 +24,11 @@ def recess_outflow(bearing: JournalBearing, recess_pressure: float, grid: FilmGr
 
 
 def sized_capillary(bearing: JournalBearing, supply_pressure: float, ratio: float, length: float,
-                    grid: FilmGrid | tuple[int, int]) -> Capillary:
-    """The capillary of this ``length`` [m] that holds the centred recesses at ``ratio`` × ``supply_pressure``."""
+                    grid: FilmGrid | tuple[int, int], entrance_loss: float = 0.0) -> Capillary:
+    """The capillary of this ``length`` [m] (and ``entrance_loss``) that holds the centred recesses at ``ratio`` ×
+    ``supply_pressure``."""
     return Capillary.passing(recess_outflow(bearing, ratio * supply_pressure, grid), (1 - ratio) * supply_pressure,
-                             bearing.viscosity, length)
+                             bearing.viscosity, length, bearing.density, entrance_loss)
 
 
 def sized_orifice(bearing: JournalBearing, supply_pressure: float, ratio: float, discharge_coefficient: float,

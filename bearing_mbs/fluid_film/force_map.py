@@ -40,7 +40,7 @@ from numba.extending import register_jitable
 
 from bearing_mbs.fluid_film.closed_forms import journal_motion_slopes
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
-from bearing_mbs.fluid_film.restrictors import Capillary, DirectSupply
+from bearing_mbs.fluid_film.restrictors import Capillary, DirectSupply, is_linear
 from bearing_mbs.fluid_film.reynolds import JournalState, Supply, solve_film
 
 #: Default table: ε from 0 to 0.95 in steps of 0.025, β in 5° steps.
@@ -55,8 +55,9 @@ SMALLEST_ECCENTRICITY = 1e-4
 SCALING_POWER = 2.5
 #: The entries of :attr:`ForceMap.axes`: ε step, φ step [rad], ψ₀ [rad], γ step [rad], m [1/s], S.
 AXES = ("eccentricity_step", "recess_direction_step", "first_recess", "share_step", "motion_scale", "supply")
-#: Restrictors whose inflow is linear in the recess pressure (the superposition above holds).
-LINEAR_RESTRICTORS = (Capillary, DirectSupply)
+#: Restrictors the map takes: linear in the recess pressure (the superposition above holds) and fed from the supply
+#: pressure (a constant flow's source is its flow, which the map does not carry).
+MAPPED_RESTRICTORS = (Capillary, DirectSupply)
 
 
 @dataclass(frozen=True)
@@ -117,7 +118,7 @@ def build_force_map(bearing: JournalBearing, grid: tuple[int, int] = (120, 30), 
                     eccentricity_ratios: np.ndarray = ECCENTRICITY_RATIOS, directions: int = DIRECTIONS,
                     recess_direction_step: float = RECESS_DIRECTION_STEP, shares: int = SHARES) -> ForceMap:
     """The map of ``bearing`` (Gümbel cavitation); a recessed bearing needs its ``supply`` through a linear restrictor
-    (:data:`LINEAR_RESTRICTORS`); ``recess_direction_step`` [deg] bounds the φ step."""
+    of :data:`MAPPED_RESTRICTORS`; ``recess_direction_step`` [deg] bounds the φ step."""
     steps = np.diff(eccentricity_ratios)
     if eccentricity_ratios[0] != 0 or not np.allclose(steps, steps[0]) or eccentricity_ratios[-1] >= 1:
         raise ValueError("eccentricity_ratios: uniform from 0, below 1")
@@ -125,9 +126,9 @@ def build_force_map(bearing: JournalBearing, grid: tuple[int, int] = (120, 30), 
     if recesses is not None:
         if supply is None:
             raise ValueError("supply = None: a recessed bearing's map needs its supply pressure and restrictor")
-        if not isinstance(supply.restrictor, LINEAR_RESTRICTORS):
-            raise ValueError(f"restrictor = {type(supply.restrictor).__name__}: the force map superposes the film's "
-                             "sources, which holds for a capillary or a directly supplied recess only; use the "
+        if not (isinstance(supply.restrictor, MAPPED_RESTRICTORS) and is_linear(supply.restrictor)):
+            raise ValueError(f"restrictor = {supply.restrictor!r}: the force map superposes the film's sources, which "
+                             "holds for a capillary without entrance loss or a directly supplied recess only; use the "
                              "Reynolds solve per evaluation")
     film_grid = FilmGrid.build(bearing, *grid)
     beta = 2 * math.pi * (np.arange(directions) + 0.5) / directions

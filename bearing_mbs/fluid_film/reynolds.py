@@ -39,7 +39,7 @@ from scipy.sparse.linalg import MatrixRankWarning, spsolve
 
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
 from bearing_mbs.fluid_film.newton import solve_balance
-from bearing_mbs.fluid_film.restrictors import Capillary, ConstantFlow, DirectSupply, feeds_oil
+from bearing_mbs.fluid_film.restrictors import DirectSupply, feeds_oil, is_linear
 
 #: Cavitation models by name.
 CAVITATION = ("gumbel", "jfo")
@@ -324,7 +324,7 @@ def _has_oil_source(grid: FilmGrid, supply: Supply | None) -> bool:
 
 
 def _linear_restrictor(supply: Supply | None) -> bool:
-    return supply is None or isinstance(supply.restrictor, Capillary | ConstantFlow | DirectSupply)
+    return supply is None or is_linear(supply.restrictor)
 
 
 def _solution(grid, state, cavitation, balance, supply, pressure, void, iterations) -> FilmSolution:

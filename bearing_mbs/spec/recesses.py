@@ -32,7 +32,8 @@ class RecessSection:
     """count >= 1 recesses of angular_width [deg] (together less than 360°; one recess of 360° is a circumferential
     groove) by axial_length [m] (<= the bearing length), depth [m] > 0, the first centred at first_angle [deg];
     supply_pressure [Pa] >= 0 through a restrictor: ``capillary`` (capillary_length, capillary_diameter [m], at least
-    20 bores long), ``orifice`` (orifice_diameter [m], discharge_coefficient in (0, 1]), ``constant_flow`` (flow
+    20 bores long; capillary_entrance_loss K [-] >= 0, default 0: the kinetic entry term K ρ ū²/2, 1.25 for a laminar
+    tube, :mod:`bearing_mbs.fluid_film.restrictors`), ``orifice`` (orifice_diameter [m], discharge_coefficient in (0, 1]), ``constant_flow`` (flow
     [m³/s] per recess) or ``none`` (the recess is held at the supply pressure: a supply groove);
     design_pressure_ratio β in (0, 1), optional, with a capillary or an orifice: its bore is then sized so that the
     centred recesses sit at β × supply_pressure (:mod:`bearing_mbs.fluid_film.design`), and capillary_diameter or
@@ -47,6 +48,7 @@ class RecessSection:
     first_angle: float = 0.0
     capillary_length: float | None = None
     capillary_diameter: float | None = None
+    capillary_entrance_loss: float = 0.0
     orifice_diameter: float | None = None
     discharge_coefficient: float = 0.6
     flow: float | None = None
@@ -77,6 +79,9 @@ class RecessSection:
             require(getattr(self, name) is not None, name, None, f"required by restrictor = {self.restrictor!r}")
             positive(name, getattr(self, name))
         in_range("discharge_coefficient", self.discharge_coefficient, 0.0, 1.0, "-", low_open=True)
+        non_negative("capillary_entrance_loss", self.capillary_entrance_loss)
+        require(self.capillary_entrance_loss == 0 or self.restrictor == "capillary", "capillary_entrance_loss",
+                self.capillary_entrance_loss, f"0 with restrictor = {self.restrictor!r} (it is a capillary's)")
         if self.restrictor == "capillary" and sized is None:
             require(self.capillary_length >= CAPILLARY_MIN_ASPECT * self.capillary_diameter, "capillary_length",
                     self.capillary_length, f">= {CAPILLARY_MIN_ASPECT:g} × capillary_diameter = "
@@ -108,7 +113,8 @@ class RecessSection:
             return
         ratio = self.design_pressure_ratio
         flow = recess_outflow(bearing, ratio * self.supply_pressure, grid)
-        bore = capillary_bore(self.capillary_length, flow, (1 - ratio) * self.supply_pressure, bearing.viscosity)
+        bore = capillary_bore(self.capillary_length, flow, (1 - ratio) * self.supply_pressure, bearing.viscosity,
+                              bearing.density, self.capillary_entrance_loss)
         require(self.capillary_length >= CAPILLARY_MIN_ASPECT * bore, "recesses.design_pressure_ratio", ratio,
                 f"a ratio whose capillary (bore {bore:g} m) is at least {CAPILLARY_MIN_ASPECT:g} bores long: a "
                 f"capillary_length >= {CAPILLARY_MIN_ASPECT * bore:g} m, or another ratio")
@@ -118,11 +124,13 @@ class RecessSection:
         is given."""
         if self.design_pressure_ratio is not None:
             ratio, pressure = self.design_pressure_ratio, self.supply_pressure
-            restrictor = (sized_capillary(bearing, pressure, ratio, self.capillary_length, grid)
+            restrictor = (sized_capillary(bearing, pressure, ratio, self.capillary_length, grid,
+                                          self.capillary_entrance_loss)
                           if self.restrictor == "capillary" else
                           sized_orifice(bearing, pressure, ratio, self.discharge_coefficient, grid))
             return Supply(pressure, restrictor)
-        restrictor = {"capillary": lambda: Capillary(self.capillary_length, self.capillary_diameter),
+        restrictor = {"capillary": lambda: Capillary(self.capillary_length, self.capillary_diameter,
+                                                     self.capillary_entrance_loss),
                       "orifice": lambda: Orifice(self.orifice_diameter, self.discharge_coefficient),
                       "constant_flow": lambda: ConstantFlow(self.flow), "none": DirectSupply}[self.restrictor]()
         return Supply(self.supply_pressure, restrictor)

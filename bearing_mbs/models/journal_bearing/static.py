@@ -159,7 +159,8 @@ def _network(spec, bearing, supply, film) -> dict:
     j, r = spec.journal, spec.journal.recesses
     aligned = j.eccentricity_ratio == 0 or math.isclose((j.attitude - r.first_angle) % 360, 0, abs_tol=1e-9) \
         if r is not None else False
-    if not (aligned and isinstance(getattr(supply, "restrictor", None), Capillary) and j.speed == 0 and r.count > 1):
+    restrictor = getattr(supply, "restrictor", None)
+    if not (aligned and isinstance(restrictor, Capillary) and restrictor.linear and j.speed == 0 and r.count > 1):
         return {}
     resistance = capillary_resistance(supply.restrictor.length, supply.restrictor.diameter, j.oil_viscosity)
     pressures, _ = network_recess_pressures(bearing, j.eccentricity_ratio, supply.pressure, resistance)

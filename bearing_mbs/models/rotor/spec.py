@@ -8,7 +8,7 @@ import math
 from dataclasses import dataclass, replace
 
 from bearing_mbs.elements.journal_bearings import SOURCES
-from bearing_mbs.fluid_film.force_map import LINEAR_RESTRICTORS
+from bearing_mbs.fluid_film.force_map import MAPPED_RESTRICTORS
 from bearing_mbs.fluid_film.journal import MAX_CELLS, JournalBearing
 from bearing_mbs.fluid_film.restrictors import RESTRICTORS
 from bearing_mbs.fluid_film.reynolds import Supply
@@ -71,10 +71,13 @@ class BearingSection:
         if self.recesses is not None:
             require(self.force == "map", "force", self.force,
                     "'map' for a recessed bearing (Ocvirk's short bearing has no recesses)")
-            linear = [name for name, kind in RESTRICTORS.items() if issubclass(kind, LINEAR_RESTRICTORS)]
-            require(self.recesses.restrictor in linear, "recesses.restrictor", self.recesses.restrictor,
-                    f"one of {', '.join(linear)}: the force map superposes the film's sources, which needs a "
+            mapped = [name for name, kind in RESTRICTORS.items() if issubclass(kind, MAPPED_RESTRICTORS)]
+            require(self.recesses.restrictor in mapped, "recesses.restrictor", self.recesses.restrictor,
+                    f"one of {', '.join(mapped)}: the force map superposes the film's sources, which needs a "
                     "restrictor linear in the recess pressure")
+            require(self.recesses.capillary_entrance_loss == 0, "recesses.capillary_entrance_loss",
+                    self.recesses.capillary_entrance_loss, "0 with the force map (the entrance loss makes the "
+                    "capillary's inflow nonlinear, and the map superposes the film's sources)")
             self.recesses.check_fits(self.bore(), self.grid)
 
     def bore(self) -> JournalBearing:
