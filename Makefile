@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed
 # pytest-xdist workers of `make test` and `make test-slow` (two cores: two workers; a single file run by hand is serial).
 WORKERS ?= 2
 
-.PHONY: demo test test-slow bench static-check skidding skidding-map cage-models clean
+.PHONY: demo test test-slow test-ross bench static-check skidding skidding-map cage-models clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -24,6 +24,13 @@ test: $(STAMP)
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow -n $(WORKERS) --dist loadscope
+
+# The ROSS comparisons (docs/fluid-film.md), in their own environment: ROSS 2.3 pins plotly<6 and brings its own stack.
+test-ross:
+	$(PYTHON) -m venv .venv-ross
+	.venv-ross/bin/pip install --quiet --upgrade pip
+	.venv-ross/bin/pip install --quiet -e '.[test,ross]'
+	.venv-ross/bin/python -m pytest -q -p no:cacheprovider tests/test_ross_adapter.py tests/test_ross_fluid_flow.py
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py
