@@ -78,6 +78,11 @@ class ForceMap:
     def eccentricity_step(self) -> float:
         return float(self.axes[0])
 
+    def forces(self, states: np.ndarray, clearance: float) -> np.ndarray:
+        """(F_x, F_y) [N] (K × 2) at each row (e_x, e_y, v_x, v_y, Ω) of ``states`` (:func:`map_forces`)."""
+        return map_forces(self.normal, self.tangential, self.linear, self.axes, np.asarray(states, dtype=float),
+                          clearance)
+
 
 def _fields(bearing: JournalBearing, grid: FilmGrid, supply: Supply | None, eps: float, psi: float) -> np.ndarray:
     """(P_s [Pa], P_a [Pa s], P_b [Pa s]) at ε, ψ [rad], each flattened over the grid's cells."""
@@ -335,5 +340,5 @@ def _mapped(force_map: ForceMap, eps: float, psi: float, sources: np.ndarray, we
     n, tangent = np.array([math.cos(psi), math.sin(psi)]), np.array([-math.sin(psi), math.cos(psi)])
     velocity = np.outer(clearance * b / 2, n) + np.outer(eps * clearance * (1 - a / eps) / 2, tangent)
     states = np.column_stack([np.tile(eps * clearance * n, (len(sources), 1)), velocity, np.ones(len(sources))])
-    force = map_forces(force_map.normal, force_map.tangential, force_map.linear, force_map.axes, states, clearance)
+    force = force_map.forces(states, clearance)
     return np.column_stack([force @ n, force @ tangent]) * divisor[:, None]

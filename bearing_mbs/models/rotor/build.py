@@ -22,7 +22,7 @@ from bearing_mbs.elements.journal_bearings import JournalFilm
 from bearing_mbs.elements.unbalances import Unbalance
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force
 from bearing_mbs.fluid_film.equilibrium import film_equilibrium
-from bearing_mbs.fluid_film.force_map import ForceMap, build_force_map, interpolation_error, map_forces
+from bearing_mbs.fluid_film.force_map import ForceMap, build_force_map, interpolation_error
 from bearing_mbs.fluid_film.journal import FilmGrid
 from bearing_mbs.fluid_film.reynolds import JournalState, solve_film
 from bearing_mbs.models.rotor.spec import BearingSection, RotorSpec
@@ -55,7 +55,7 @@ def map_orbit_error(spec: RotorSpec, centres: np.ndarray, velocities: np.ndarray
     b, table = spec.bearing, force_map_of(spec)
     bearing, supply, grid = b.bearing(), b.supply(), FilmGrid.build(b.bearing(), *b.grid)
     states = np.column_stack([centres, velocities])
-    mapped = map_forces(table.normal, table.tangential, table.linear, table.axes, states, b.radial_clearance)
+    mapped = table.forces(states, b.radial_clearance)
     solved = np.array([solve_film(bearing, JournalState(tuple(state[:2]), tuple(state[2:4]), state[4]), supply,
                                   grid).force for state in states])
     largest = np.hypot(*solved.T).max()
@@ -74,9 +74,8 @@ def film_force(spec: RotorSpec):
         table = force_map_of(spec)
 
         def force(state: JournalState):
-            states = np.array([[*state.eccentricity, *state.eccentricity_rate, state.speed]])
-            return count * map_forces(table.normal, table.tangential, table.linear, table.axes, states,
-                                      b.radial_clearance)[0]
+            states = [[*state.eccentricity, *state.eccentricity_rate, state.speed]]
+            return count * table.forces(states, b.radial_clearance)[0]
     return force
 
 
