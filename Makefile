@@ -25,12 +25,13 @@ test: $(STAMP)
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow -n $(WORKERS) --dist loadscope
 
-# The ROSS comparisons (docs/fluid-film.md), in their own environment: ROSS 2.3 pins plotly<6 and brings its own stack.
+# The ROSS comparisons (docs/fluid-film.md; ROSS's own tests are skipped by `make test`), in their own environment: ROSS 2.3 pins plotly<6 and brings its own stack.
 test-ross:
 	$(PYTHON) -m venv .venv-ross
 	.venv-ross/bin/pip install --quiet --upgrade pip
 	.venv-ross/bin/pip install --quiet -e '.[test,ross]'
-	.venv-ross/bin/python -m pytest -q -p no:cacheprovider tests/test_ross_adapter.py tests/test_ross_fluid_flow.py
+	.venv-ross/bin/python -m pytest -q -p no:cacheprovider tests/test_ross_adapter.py tests/test_ross_fluid_flow.py \
+		tests/test_ross_plain_journal.py
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run_all.py
