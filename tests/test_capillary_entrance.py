@@ -20,6 +20,7 @@ import pytest
 from bearing_mbs.fluid_film.restrictors import (
     SHAH_ENTRANCE_LOSS,
     Capillary,
+    capillary_bore,
     capillary_resistance,
     capillary_reynolds,
 )
@@ -50,7 +51,7 @@ def test_without_entrance_loss_it_is_hagen_poiseuille_and_sizing_is_exact():
     resistance = capillary_resistance(0.020, 0.0006, MU)
     assert Capillary(0.020, 0.0006).inflow(1e6, 4e5, MU, RHO) == (6e5 / resistance, -1 / resistance)
     for loss in (0.0, SHAH_ENTRANCE_LOSS):
-        sized = Capillary.passing(2e-6, 5e5, MU, 0.020, RHO, loss)
+        sized = Capillary(0.020, capillary_bore(0.020, 2e-6, 5e5, MU, RHO, loss), loss)
         assert sized.inflow(1e6, 5e5, MU, RHO)[0] == pytest.approx(2e-6, rel=1e-12)
 
 

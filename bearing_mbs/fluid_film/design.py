@@ -12,7 +12,7 @@ recess at β p_s exactly.
 from __future__ import annotations
 
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing
-from bearing_mbs.fluid_film.restrictors import Capillary, DirectSupply, Orifice
+from bearing_mbs.fluid_film.restrictors import Capillary, DirectSupply, Orifice, capillary_bore
 from bearing_mbs.fluid_film.reynolds import JournalState, Supply, solve_film
 
 
@@ -23,12 +23,20 @@ def recess_outflow(bearing: JournalBearing, recess_pressure: float, grid: FilmGr
     return float(film.supply_flows.max())
 
 
+def sized_capillary_bore(bearing: JournalBearing, supply_pressure: float, ratio: float, length: float,
+                         grid: FilmGrid | tuple[int, int], entrance_loss: float = 0.0) -> float:
+    """The bore [m] of the capillary of this ``length`` [m] (and ``entrance_loss``) that holds the centred recesses
+    at ``ratio`` × ``supply_pressure`` (before a :class:`Capillary` checks that it is long enough for it)."""
+    return capillary_bore(length, recess_outflow(bearing, ratio * supply_pressure, grid), (1 - ratio) * supply_pressure,
+                          bearing.viscosity, bearing.density, entrance_loss)
+
+
 def sized_capillary(bearing: JournalBearing, supply_pressure: float, ratio: float, length: float,
                     grid: FilmGrid | tuple[int, int], entrance_loss: float = 0.0) -> Capillary:
     """The capillary of this ``length`` [m] (and ``entrance_loss``) that holds the centred recesses at ``ratio`` ×
     ``supply_pressure``."""
-    return Capillary.passing(recess_outflow(bearing, ratio * supply_pressure, grid), (1 - ratio) * supply_pressure,
-                             bearing.viscosity, length, bearing.density, entrance_loss)
+    return Capillary(length, sized_capillary_bore(bearing, supply_pressure, ratio, length, grid, entrance_loss),
+                     entrance_loss)
 
 
 def sized_orifice(bearing: JournalBearing, supply_pressure: float, ratio: float, discharge_coefficient: float,

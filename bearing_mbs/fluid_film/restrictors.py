@@ -92,13 +92,6 @@ class Capillary:
         flow = 2.0 * drop / (resistance + math.sqrt(resistance**2 + 4.0 * kinetic * abs(drop)))
         return flow, -1.0 / (resistance + 2.0 * kinetic * abs(flow))
 
-    @classmethod
-    def passing(cls, flow: float, drop: float, viscosity: float, length: float, density: float = 0.0,
-                entrance_loss: float = 0.0) -> Capillary:
-        """The capillary of this ``length`` [m] and ``entrance_loss`` that passes ``flow`` [m³/s] at the pressure
-        ``drop`` [Pa] (oil of ``viscosity`` [Pa s] and ``density`` [kg/m³], :func:`capillary_bore`)."""
-        return cls(length, capillary_bore(length, flow, drop, viscosity, density, entrance_loss), entrance_loss)
-
 
 @dataclass(frozen=True)
 class Orifice:

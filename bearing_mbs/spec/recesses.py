@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from bearing_mbs.fluid_film.design import recess_outflow, sized_capillary, sized_orifice
+from bearing_mbs.fluid_film.design import sized_capillary, sized_capillary_bore, sized_orifice
 from bearing_mbs.fluid_film.journal import FilmGrid, JournalBearing, Recesses
 from bearing_mbs.fluid_film.restrictors import (
     CAPILLARY_MIN_ASPECT,
@@ -14,7 +14,6 @@ from bearing_mbs.fluid_film.restrictors import (
     ConstantFlow,
     DirectSupply,
     Orifice,
-    capillary_bore,
     feeds_oil,
 )
 from bearing_mbs.fluid_film.reynolds import Supply
@@ -112,12 +111,11 @@ class RecessSection:
         if self.design_pressure_ratio is None or self.restrictor != "capillary":
             return
         ratio = self.design_pressure_ratio
-        flow = recess_outflow(bearing, ratio * self.supply_pressure, grid)
-        bore = capillary_bore(self.capillary_length, flow, (1 - ratio) * self.supply_pressure, bearing.viscosity,
-                              bearing.density, self.capillary_entrance_loss)
-        require(self.capillary_length >= CAPILLARY_MIN_ASPECT * bore, "recesses.design_pressure_ratio", ratio,
-                f"a ratio whose capillary (bore {bore:g} m) is at least {CAPILLARY_MIN_ASPECT:g} bores long: a "
-                f"capillary_length >= {CAPILLARY_MIN_ASPECT * bore:g} m, or another ratio")
+        diameter = sized_capillary_bore(bearing, self.supply_pressure, ratio, self.capillary_length, grid,
+                                        self.capillary_entrance_loss)
+        require(self.capillary_length >= CAPILLARY_MIN_ASPECT * diameter, "recesses.design_pressure_ratio", ratio,
+                f"a ratio whose capillary (bore {diameter:g} m) is at least {CAPILLARY_MIN_ASPECT:g} bores long: a "
+                f"capillary_length >= {CAPILLARY_MIN_ASPECT * diameter:g} m, or another ratio")
 
     def supply(self, bearing: JournalBearing, grid: tuple[int, int]) -> Supply:
         """The recesses' supply through their restrictors, sized on ``grid`` for the design pressure ratio if one
