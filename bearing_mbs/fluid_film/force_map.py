@@ -238,44 +238,54 @@ def _map_evaluation(normal, tangential, linear, axes, e_x, e_y, v_x, v_y, speed,
     cells = (at_eps, at_phi, _cell((0.5 * math.pi - gamma) / share_step, shares, False),
              _cell(beta / (2.0 * math.pi) * directions - 0.5, directions, True))
     slopes = with_slopes and not centred
+    # the slopes' arrays are made only when asked for: the force alone (every step of a run) allocates no more
     zero = np.zeros(5)
-    eps_d = psi_d = radius_d = gamma_d = beta_d = a_d = b_d = nx_d = ny_d = zero
+    radius_d = a_d = b_d = nx_d = ny_d = eps_d = zero
+    positions_d = (zero, zero, zero, zero)
+    film_d = jacobian  # a placeholder the force alone never writes
     if slopes:
         n_x, n_y, eps, _, a, nx_d, ny_d, eps_d, eps_rate_d, a_d = journal_motion_slopes(
             e_x, e_y, v_x, v_y, speed, clearance)
         b_d = 2.0 * eps_rate_d
         psi_d = np.array([-n_y / e, n_x / e, 0.0, 0.0, 0.0])
+        gamma_d = beta_d = zero
         if magnitude > 0.0:
             u_d = (a * a_d + b * b_d) / (magnitude * motion_scale)
             beta_d = (a * b_d - b * a_d) / (magnitude * magnitude)
             radius_d = u * u_d / radius
             gamma_d = supply * u_d / (radius * radius)
-    positions_d = (eps_d / eps_step, psi_d / phi_step, -gamma_d / share_step, beta_d / (2.0 * math.pi) * directions)
+        positions_d = (eps_d / eps_step, psi_d / phi_step, -gamma_d / share_step,
+                       beta_d / (2.0 * math.pi) * directions)
+        film_d = np.zeros((2, 5))
     # the film in the eccentricity's frame: the full film S F_s + a F_a + b F_b, plus R times Gümbel's correction
-    film, film_d = np.zeros(2), np.zeros((2, 5))
+    film_n = film_t = 0.0
     for m in range(2):
         correction, correction_slopes = _interpolate(normal if m == 0 else tangential, cells)
-        film[m] = radius * correction
+        value = radius * correction
         if slopes:
             film_d[m] = radius_d * correction
             for axis in range(4):
                 film_d[m] += radius * correction_slopes[axis] * positions_d[axis]
         for k, (weight, weight_d) in enumerate(((supply, zero), (a, a_d), (b, b_d))):
             part, by_eps, by_phi = _bilinear(linear, at_eps, at_phi, k, m)
-            film[m] += weight * part
+            value += weight * part
             if slopes:
                 film_d[m] += weight_d * part + weight * (by_eps * positions_d[0] + by_phi * positions_d[1])
+        if m == 0:
+            film_n = value
+        else:
+            film_t = value
     bounded = min(eps, (rows - 1) * eps_step)
     scale = 1.0 / (1.0 - bounded * bounded) ** SCALING_POWER
-    force_x = scale * (film[0] * n_x - film[1] * n_y)
-    force_y = scale * (film[0] * n_y + film[1] * n_x)
+    force_x = scale * (film_n * n_x - film_t * n_y)
+    force_y = scale * (film_n * n_y + film_t * n_x)
     if not slopes:
         return force_x, force_y, jacobian
     scale_d = zero
     if eps < (rows - 1) * eps_step:
         scale_d = scale * SCALING_POWER * 2.0 * eps / (1.0 - eps * eps) * eps_d
-    f_n, f_t = scale * film[0], scale * film[1]
-    f_n_d, f_t_d = scale_d * film[0] + scale * film_d[0], scale_d * film[1] + scale * film_d[1]
+    f_n, f_t = scale * film_n, scale * film_t
+    f_n_d, f_t_d = scale_d * film_n + scale * film_d[0], scale_d * film_t + scale * film_d[1]
     jacobian[0] = f_n_d * n_x + f_n * nx_d - f_t_d * n_y - f_t * ny_d
     jacobian[1] = f_n_d * n_y + f_n * ny_d + f_t_d * n_x + f_t * nx_d
     return force_x, force_y, jacobian
