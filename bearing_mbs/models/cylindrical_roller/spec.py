@@ -591,16 +591,21 @@ class BearingModelSpec(Spec):
 
 
 def with_preset(data: dict) -> dict:
-    """Put a ``[bearing] preset``'s values under the keys the file does not give (before validation)."""
+    """Put a ``[bearing] preset``'s values under the keys the file does not give (before validation). A file that
+    gives ``diametral_clearance`` (or ``pitch_diameter``) describes the raceways by the pitch circle: the preset's
+    raceway diameters are then left out, and without a ``pitch_diameter`` the preset's pitch circle is kept."""
     bearing = data.get("bearing")
     if isinstance(bearing, dict) and bearing.get("preset"):
         name = bearing["preset"]
         if not isinstance(name, str) or name not in PRESETS:
             raise SpecError("bearing.preset", name, f"must be one of {', '.join(PRESETS)}")
-        given = set(bearing)
+        given, preset = set(bearing), PRESETS[name]
         if given & {"pitch_diameter", "diametral_clearance"}:  # the user chose the other raceway description
-            bearing.update({k: v for k, v in PRESETS[name].items()
-                            if k not in given and k not in ("inner_race_diameter", "outer_race_diameter")})
+            races = ("inner_race_diameter", "outer_race_diameter")
+            bearing.update({k: v for k, v in preset.items() if k not in given and k not in races})
+            if "pitch_diameter" not in given and all(k in preset for k in races):
+                # a clearance alone keeps the preset's pitch circle, the raceways' mean (d_i + d_o)/2
+                bearing["pitch_diameter"] = (preset["inner_race_diameter"] + preset["outer_race_diameter"]) / 2
         else:
             bearing.update({k: v for k, v in PRESETS[name].items() if k not in given})
     return data
