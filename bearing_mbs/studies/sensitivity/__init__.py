@@ -21,9 +21,12 @@ from bearing_mbs.studies.sensitivity.analysis import Indices, analyze
 from bearing_mbs.studies.sensitivity.execution import EvaluationStats, connect, evaluate, run_table
 from bearing_mbs.studies.sensitivity.models import (
     BUILTIN_MODELS,
+    EVALUATORS,
     IshigamiModel,
     RunModel,
     SimulationModel,
+    SkiddingBalanceModel,
+    SteadyRunModel,
     ishigami_indices,
 )
 from bearing_mbs.studies.sensitivity.pipeline import StudyResult, run_study, write_report
@@ -45,6 +48,7 @@ __all__ = [
     "ANALYZERS",
     "BUILTIN_MODELS",
     "DISTRIBUTIONS",
+    "EVALUATORS",
     "SAMPLERS",
     "EvaluationStats",
     "Execution",
@@ -56,6 +60,8 @@ __all__ = [
     "RunModel",
     "RunStore",
     "SimulationModel",
+    "SkiddingBalanceModel",
+    "SteadyRunModel",
     "Study",
     "StudyResult",
     "analyze",

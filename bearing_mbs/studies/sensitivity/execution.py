@@ -21,6 +21,7 @@ import numpy as np
 import pandas as pd
 
 from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.result import FAILED
 from bearing_mbs.core.status import failed_check_names
 from bearing_mbs.spec import SpecError
 from bearing_mbs.studies.sensitivity.runs import ERROR, MAX_ATTEMPTS, Run, evaluate_runs, plan, task_error
@@ -179,8 +180,8 @@ def _check_outputs(study: Study, summary: dict) -> None:
 
 def run_table(study: Study, X: np.ndarray, keys: list[str], store: RunStore) -> pd.DataFrame:
     """The table of runs, one row per sample (row of X): the parameter values, the run key, status,
-    attempts, cost [s], the outputs (NaN where a run has no finite value), the error message and the names of the
-    run's failed checks (docs/status.md)."""
+    attempts, cost [s], the outputs (NaN where a run has no finite value), the error message (of a failed run: why it
+    stopped or found no solution) and the names of the run's failed checks (docs/status.md)."""
     rows = store.rows(keys)
     records = []
     for i, (x, key) in enumerate(zip(np.asarray(X, dtype=float), keys)):
@@ -191,8 +192,10 @@ def run_table(study: Study, X: np.ndarray, keys: list[str], store: RunStore) -> 
                       wall_time_s=row["wall_time_s"] if row else None)
         summary = (row or {}).get("summary") or {}
         for output in study.outputs:
-            record[output] = _number(summary.get(output)) if row and row["status"] != "failed" else np.nan
-        record["error"] = (row["error"] or "").splitlines()[0] if row and row["error"] else ""
+            record[output] = _number(summary.get(output)) if row and row["status"] != FAILED else np.nan
+        # an error's message, or why a run stopped early (or found no solution): its summary's message
+        error = ((row["error"] or (summary.get("message") if row["status"] == FAILED else None)) if row else None) or ""
+        record["error"] = error.splitlines()[0] if error else ""
         record["failed_checks"] = ", ".join(failed_check_names(summary.get("checks") or ()))
         records.append(record)
     table = pd.DataFrame.from_records(records)

@@ -7,8 +7,16 @@ of the same input are one run.
 
 - :class:`SimulationModel`: a ``bearing_mbs`` scenario (any ``[scenario] model``), run by
   :func:`bearing_mbs.runner.run_spec`; its summary is :func:`bearing_mbs.runner.summarize`.
+- :class:`SteadyRunModel`: the same run of a bearing scenario, read for steady values: its checks get
+  ``window_settled`` (:mod:`bearing_mbs.studies.settling`), so a run whose window has not settled is ``suspect``.
+- :class:`SkiddingBalanceModel`: the same sample of a lubricated bearing scenario, evaluated by the quasi-static
+  skidding balance instead of a run (a point of :mod:`bearing_mbs.studies.skidding_map`, seconds where a light-load
+  run needs seconds of simulated time to settle); a point without a balance is a ``failed`` run.
 - :class:`IshigamiModel`: SALib's Ishigami–Homma test function, whose Sobol indices are known
   analytically; it goes through the same sample → evaluate → persist → analyze pipeline and checks it.
+
+A study file chooses among the three scenario models with ``[study] evaluate`` (:data:`EVALUATORS`). Their
+names differ, so the same spec evaluated two ways is two runs (a run's key hashes the model name).
 
 Models are sent to Dask workers by pickling, so a model is a small, picklable object; a Python user
 can pass an instance of their own subclass of :class:`RunModel`.
@@ -25,6 +33,7 @@ from pathlib import Path
 
 from bearing_mbs.models import spec_from_mapping
 from bearing_mbs.spec import SpecError, apply_override, read_scenario, to_mapping
+from bearing_mbs.spec.fields import require
 
 RESULT_FILE = "result.npz"
 
@@ -98,6 +107,8 @@ class SimulationModel(RunModel):
 
         spec = spec_from_mapping(data)
         scene, result = run_spec(spec)
+        if result.completed:  # a run that stopped early has no checks: its failure says why
+            result.checks = (*result.checks, *self.study_checks(spec, scene, result))
         summary = summarize(spec, scene, result)
         files = {}
         if keep_result:
@@ -105,6 +116,10 @@ class SimulationModel(RunModel):
                 path = result.save(Path(directory) / RESULT_FILE)
                 files[RESULT_FILE] = path.read_bytes()
         return summary, files
+
+    def study_checks(self, spec, scene, result) -> tuple:
+        """Checks the study adds to a finished run's own (none here)."""
+        return ()
 
     def describe(self) -> str:
         sets = "".join(f" --set {text}" for text in self.overrides)
@@ -120,6 +135,98 @@ class SimulationModel(RunModel):
         for key, value in state.items():
             object.__setattr__(self, key, value)
         object.__setattr__(self, "_base", None)
+
+
+def _require_bearing(spec, evaluator: str) -> None:
+    require(spec.scenario.model == "bearing", "scenario.model", spec.scenario.model,
+            f"the {evaluator} evaluator reads a bearing's cage slip: a bearing scenario")
+
+
+@dataclass(frozen=True)
+class SteadyRunModel(SimulationModel):
+    """A bearing scenario's run read for steady values: :class:`SimulationModel`'s run whose checks get
+    ``window_settled`` (the cage slip's means over the analysis window's two halves agree to the pocket-play
+    resolution plus 5 %: :func:`bearing_mbs.studies.settling.window_settled`). A run still approaching its steady
+    slip is ``suspect``, and the study with it. The base scenario must be a bearing's."""
+
+    name: str = "steady_run"
+
+    def __post_init__(self):
+        super().__post_init__()
+        _require_bearing(spec_from_mapping(self._base), "steady_run")
+
+    def study_checks(self, spec, scene, result) -> tuple:
+        from bearing_mbs.studies.settling import window_settled
+
+        return (window_settled(spec, scene, result),)
+
+    def describe(self) -> str:
+        return f"{super().describe()}; each run's analysis window held to settle (window_settled)"
+
+
+#: Units of the numbers a skidding-balance point reports (the columns of
+#: :data:`bearing_mbs.studies.skidding_map.COLUMNS` but its status, message and checks): the point's inputs, the
+#: steady slips (fractions), the raceways' frictional power intensity and the losses.
+BALANCE_UNITS = {
+    "speed_rpm": "rpm",
+    "temperature": "°C",
+    "clearance": "m",
+    "radial_load": "N",
+    "total_load": "N",
+    "cage_slip": "-",
+    "max_roller_slip_loaded": "-",
+    "max_roller_slip_unloaded": "-",
+    "max_inner_slide_to_roll": "-",
+    "max_frictional_power_intensity": "W/mm²",
+    "max_frictional_power_intensity_inner": "W/mm²",
+    "max_frictional_power_intensity_outer": "W/mm²",
+    "friction_torque": "N m",
+    "power_loss": "W",
+    "land_torque": "N m",
+    "wall_time_s": "s",
+}
+#: The skidding map's columns that are not numbers.
+BALANCE_TEXT_COLUMNS = ("status", "message", "checks")
+
+
+@dataclass(frozen=True)
+class SkiddingBalanceModel(SimulationModel):
+    """A lubricated bearing scenario evaluated by the quasi-static skidding balance
+    (:func:`bearing_mbs.models.cylindrical_roller.steady_skidding.solve_skidding`) instead of a run: the spec is
+    built exactly as for a run (the base, its overrides, the sampled values), and its summary is the skidding map's
+    row for it (:func:`bearing_mbs.studies.skidding_map.point`: cage slip, largest roller slips in and out of the
+    load zone, slide-to-roll ratio, friction torque, power loss; units in :data:`BALANCE_UNITS`), with a ``status``:
+    ``success``, or ``failed`` where the balance has no solution (its ``message`` says why; its values are null).
+    The base scenario must be a caged bearing with a lubricant temperature
+    (:func:`bearing_mbs.studies.skidding_map.check_grid`), at constant speed and load."""
+
+    name: str = "skidding_balance"
+
+    def __post_init__(self):
+        from bearing_mbs.studies.skidding_map import check_grid
+
+        super().__post_init__()
+        spec = spec_from_mapping(self._base)
+        _require_bearing(spec, "skidding_balance")
+        check_grid(spec, [spec.load.radial], [spec.lubricant.temperature], [spec.drive.speed_rpm])
+
+    def outputs(self) -> tuple[str, ...]:
+        """The skidding map's numeric columns."""
+        from bearing_mbs.studies.skidding_map import COLUMNS
+
+        return tuple(column for column in COLUMNS if column not in BALANCE_TEXT_COLUMNS)
+
+    def evaluate(self, data: dict, keep_result: bool = False) -> tuple[dict, dict[str, bytes]]:
+        from bearing_mbs.io.json import json_safe, rounded
+        from bearing_mbs.studies.skidding_map import point
+
+        spec = spec_from_mapping(data)
+        row, _ = point(spec, spec.drive.speed_rpm, spec.lubricant.temperature, spec.load.radial)
+        row["units"] = {key: BALANCE_UNITS[key] for key in row if key in BALANCE_UNITS}
+        return rounded(json_safe(row)), {}
+
+    def describe(self) -> str:
+        return f"{super().describe()}; evaluated by the quasi-static skidding balance"
 
 
 @dataclass(frozen=True)
@@ -176,3 +283,6 @@ def ishigami_indices(a: float = 7.0, b: float = 0.1) -> dict[str, list[float]]:
 
 #: Built-in models a study file can name with ``[study] model = ...`` (a scenario file means simulation).
 BUILTIN_MODELS = {"ishigami": IshigamiModel}
+#: How a study evaluates the samples of its base scenario, ``[study] evaluate = ...``: a run (the default), a run
+#: whose analysis window must settle, or the quasi-static skidding balance.
+EVALUATORS = {"run": SimulationModel, "steady_run": SteadyRunModel, "skidding_balance": SkiddingBalanceModel}

@@ -132,10 +132,10 @@ def _runs_section(study: Study, table: pd.DataFrame, h: str) -> list[str]:
         cells = [row["key"][:12] if c == "key" else _fmt(row[c]) for c in columns]
         lines.append(f"| {sample} | " + " | ".join(cells) + " |")
     lines.append("")
-    errors = table[table["status"] == "error"].drop_duplicates("key")
+    errors = table[table["status"].isin(("error", "failed"))].drop_duplicates("key")
     if len(errors):
-        lines += [f"{len(errors)} run(s) ended in an error:", ""]
-        lines += [f"- `{r['key'][:12]}`: {r['error']}" for _, r in errors.head(INLINE_RUNS).iterrows()]
+        lines += [f"{len(errors)} run(s) ended in an error or failed:", ""]
+        lines += [f"- `{r['key'][:12]}` ({r['status']}): {r['error']}" for _, r in errors.head(INLINE_RUNS).iterrows()]
         lines.append("")
     return lines
 

@@ -18,7 +18,7 @@ from pathlib import Path
 from bearing_mbs.spec import SpecError
 from bearing_mbs.spec.fields import in_range, one_of, require
 from bearing_mbs.spec.loading import apply_override, from_mapping, parse_override
-from bearing_mbs.studies.sensitivity.models import BUILTIN_MODELS, RunModel, SimulationModel
+from bearing_mbs.studies.sensitivity.models import BUILTIN_MODELS, EVALUATORS, RunModel, SimulationModel
 
 #: Sampling designs: full-factorial grid, Latin hypercube, Morris trajectories, Sobol'–Saltelli.
 SAMPLERS = ("grid", "latin", "morris", "sobol")
@@ -179,7 +179,9 @@ class StudyHeader:
     """``[study]``: name; description; scenario: base scenario file, relative to the study file; or
     model: a built-in model (``ishigami``); overrides: ``section.key=value`` strings applied to every run
     (e.g. solver settings); outputs: summary metrics to analyse; seed: of the sampling and bootstrap
-    (needed by latin, morris and sobol)."""
+    (needed by latin, morris and sobol); evaluate: how a base scenario's sample is evaluated
+    (:data:`~.models.EVALUATORS`): ``run`` (default), ``steady_run`` (a bearing run whose analysis window must
+    settle) or ``skidding_balance`` (the quasi-static skidding balance instead of a run)."""
 
     name: str
     outputs: tuple[str, ...]
@@ -188,6 +190,10 @@ class StudyHeader:
     overrides: tuple[str, ...] = ()
     seed: int | None = None
     description: str = ""
+    evaluate: str = "run"
+
+    def __post_init__(self):
+        one_of("evaluate", self.evaluate, tuple(EVALUATORS))
 
 
 @dataclass(frozen=True)
@@ -304,6 +310,8 @@ def load_study(path: str | Path, overrides: list[str] = ()) -> Study:
         one_of("study.model", header.model, tuple(BUILTIN_MODELS))
         require(not header.overrides, "study.overrides", list(header.overrides),
                 "overrides apply to a base scenario; set the built-in model's inputs as parameters")
+        require(header.evaluate == "run", "study.evaluate", header.evaluate,
+                "chooses how a base scenario's samples are evaluated; a built-in model evaluates itself")
         model = BUILTIN_MODELS[header.model]()
     else:
         scenario = (path.parent / header.scenario).resolve()
@@ -311,6 +319,12 @@ def load_study(path: str | Path, overrides: list[str] = ()) -> Study:
             model = SimulationModel(str(scenario), header.overrides)
         except SpecError as error:
             raise SpecError("study.scenario", header.scenario, f"the base scenario is invalid: {error}") from None
+        if header.evaluate != "run":
+            try:
+                model = EVALUATORS[header.evaluate](str(scenario), header.overrides)
+            except SpecError as error:
+                raise SpecError("study.evaluate", header.evaluate,
+                                f"cannot evaluate {model.describe()}: {error}") from None
     known = model.outputs()
     for i, output in enumerate(header.outputs):
         require(known is None or output in known, f"study.outputs.{i}", output,
