@@ -26,13 +26,37 @@ keeps that start and has no window metric (None).
 * ``energy_balance_error``: see :func:`bearing_mbs.analysis.energy_balance_error`.
 * ``max_cage_eccentricity``: the largest distance of the cage centre from the bearing axis [m]; beyond half
   a roller diameter the cage has left its rollers, and ``warnings`` says so.
+* ``max_frictional_power_intensity`` (and ``_inner``, ``_outer`` per raceway) [W/mm²]: the largest frictional
+  power per unit contact area of a raceway contact over the window, the smearing measure of docs/smearing.md
+  (:func:`frictional_power_intensity`): the traction of the pair's own law at the recorded load, slip and rolling
+  speed times the slip, over the Hertz contact 2 b l. The recorded ``friction_force`` is not used: for a
+  lubricated pair with hydrodynamic rolling resistance it also holds that resistance's tangential share, whose
+  power is the inlet's rolling loss, not sliding in the contact.
+
+The frictional power intensity of a line contact of length l under the load Q, with the traction μQ and the
+sliding speed Δu, is
+
+.. math:: q = \frac{\mu Q\,|\Delta u|}{2 b l} = \bar\tau\,|\Delta u|,
+          \qquad b = \sqrt{\frac{8 (Q/l) R}{\pi E'}}
+
+(:func:`bearing_mbs.contact.ehl.hertz_half_width`: K. L. Johnson, *Contact Mechanics*, 1985, §4.2), the mean shear
+stress of the contact times the sliding speed: the frictional power intensity of scuffing and smearing criteria
+(e.g. J. H. Horng, J. F. Lin, K. Y. Li, J. Tribol. 118 (1996) 669–675, who divide by the real area of contact
+instead). E' and R are a raceway's (:func:`raceway_contact`).
 """
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 from bearing_mbs.analysis import energy_balance_error
+from bearing_mbs.contact import kernel
+from bearing_mbs.contact.ehl import hertz_half_width, reduced_radius
+from bearing_mbs.contact.line_contact import effective_modulus
+from bearing_mbs.contact.traction import TRACTION_COLUMNS
+from bearing_mbs.elements.contact_pairs import pack
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 
 #: Percentile of the per-instant largest roller load that ``max_roller_load`` reports [%].
@@ -44,7 +68,77 @@ UNITS = {
     "max_roller_slip_inner": "-", "max_roller_slip_outer": "-", "max_roller_load": "N", "max_impact_load": "N",
     "roller_loads": "angle_deg: deg, load_N: N", "inner_ring_displacement": "m", "inner_ring_offset": "m",
     "max_pocket_force": "N", "energy_balance_error": "-", "max_cage_eccentricity": "m", "analysis_start": "s",
+    "max_frictional_power_intensity": "W/mm²", "max_frictional_power_intensity_inner": "W/mm²",
+    "max_frictional_power_intensity_outer": "W/mm²",
 }
+
+#: The raceway contact groups, in the order of the ``_inner``, ``_outer`` entries.
+RACEWAYS = ("inner_race", "outer_race")
+#: W/m² in one W/mm², the unit of the frictional power intensity in the outputs.
+W_PER_MM2 = 1e6
+
+
+class LineContact(NamedTuple):
+    """The Hertz line contact of a roller on a raceway: reduced modulus E' = 2/[(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] [Pa],
+    reduced radius R [m] in the rolling direction and length l [m]."""
+
+    modulus: float
+    radius: float
+    length: float
+
+
+def raceway_contact(spec, scene, group: str) -> LineContact:
+    """E', R and l of the raceway ``group`` ('inner_race' or 'outer_race'): the lubricated pair's traction row
+    carries them; for another law they are derived as the builder derives that row, E' from the roller's and the
+    ring's materials (:func:`~bearing_mbs.contact.line_contact.effective_modulus`, times 2), R from the pair's
+    raceway and roller radii (:func:`~bearing_mbs.contact.ehl.reduced_radius`, concave for the outer raceway), l the
+    roller's effective length."""
+    pair = scene.pairs[int(pair_columns(scene, group)[0])]
+    if pair.law.traction:
+        row = dict(zip(TRACTION_COLUMNS, pair.law.traction))
+        return LineContact(row["modulus"], row["radius"], row["length"])
+    bearing = spec.bearing
+    roller, ring = bearing.roller_material, bearing.ring_material
+    modulus = 2 * effective_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus,
+                                    ring.poisson_ratio)
+    radius = reduced_radius(pair.radius_a, pair.radius_b, pair.kind == "circle_in_circle")
+    return LineContact(float(modulus), float(radius), BearingGeometry.from_spec(bearing).roller_length)
+
+
+def frictional_power_intensity(traction, sliding, load, contact: LineContact) -> np.ndarray:
+    """q = |F Δu|/(2 b l) [W/m²] of line contacts carrying ``load`` Q [N] with the traction F [N] at the sliding
+    speed Δu [m/s] (arrays of one shape); 0 where Q <= 0 (no contact)."""
+    traction, sliding, load = np.broadcast_arrays(*(np.asarray(x, float) for x in (traction, sliding, load)))
+    touching = load > 0
+    half_width = hertz_half_width(np.where(touching, load, 1.0) / contact.length, contact.radius, contact.modulus)
+    return np.where(touching, np.abs(traction * sliding) / (2 * half_width * contact.length), 0.0)
+
+
+def law_traction(scene, pair: int, load, sliding, rolling) -> np.ndarray:
+    """The traction μQ [N] (along the pair's tangent) that pair ``pair``'s friction law gives at each load Q [N],
+    slip Δu and rolling speed u [m/s] (arrays of one shape): the kernel's own law, without what resists the rolling;
+    0 where Q <= 0."""
+    laws = pack([scene.pairs[pair]])
+    law, coefficient, regularisation, row = (laws.friction_law[0], laws.friction_coefficient[0],
+                                             laws.regularisation_speed[0], laws.traction[0])
+    load, sliding, rolling = np.broadcast_arrays(*(np.asarray(x, float) for x in (load, sliding, rolling)))
+    traction = np.zeros(load.shape)
+    for index in np.ndindex(load.shape):
+        if load[index] > 0:
+            traction[index] = kernel.tangential_force(law, load[index], coefficient, sliding[index], rolling[index],
+                                                      regularisation, row)
+    return traction
+
+
+def raceway_power_intensity(spec, scene, result, mask, group: str) -> np.ndarray:
+    """(T, Z) frictional power intensity [W/m²] of the raceway ``group``'s contacts at the instants in ``mask``."""
+    contact = raceway_contact(spec, scene, group)
+    columns = pair_columns(scene, group)
+    load, slip, rolling = (result.pair_series(name)[mask][:, columns]
+                           for name in ("normal_force", "slip", "rolling_speed"))
+    traction = np.column_stack([law_traction(scene, int(k), load[:, j], slip[:, j], rolling[:, j])
+                                for j, k in enumerate(columns)]) if columns.size else np.zeros(load.shape)
+    return frictional_power_intensity(traction, slip, load, contact)
 
 
 def window(spec, result) -> np.ndarray:
@@ -123,8 +217,8 @@ def bearing_warnings(spec, scene, result) -> list[str]:
     half_roller = spec.bearing.roller_diameter / 2
     if eccentricity is None or not eccentricity > half_roller:
         return []
-    return [f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller diameter: it has "
-            f"left its rollers and its speed is meaningless"]
+    return [(f"the cage centre moved {eccentricity:.3g} m off the axis, more than half a roller diameter: it has "
+             f"left its rollers and its speed is meaningless")]
 
 
 def bearing_metrics(spec, scene, result) -> dict:
@@ -156,6 +250,9 @@ def bearing_metrics(spec, scene, result) -> dict:
     def largest(values):
         return float(np.nanmax(np.abs(values))) if np.isfinite(values).any() else None
 
+    intensity = {group: largest(raceway_power_intensity(spec, scene, result, mask, group) / W_PER_MM2)
+                 for group in RACEWAYS}
+
     return {
         "mean_inner_speed_rpm": float(np.mean(inner_speed[mask]) * 60 / (2 * np.pi)),
         "cage_speed_ratio": ratio,
@@ -170,6 +267,9 @@ def bearing_metrics(spec, scene, result) -> dict:
         "inner_ring_displacement": float(np.hypot(*offset)),
         "inner_ring_offset": [float(offset[0]), float(offset[1])],
         "max_pocket_force": max_pocket,
+        "max_frictional_power_intensity": max((q for q in intensity.values() if q is not None), default=None),
+        "max_frictional_power_intensity_inner": intensity["inner_race"],
+        "max_frictional_power_intensity_outer": intensity["outer_race"],
         **whole_run,
         "analysis_start": float(result.time[mask][0]),
     }

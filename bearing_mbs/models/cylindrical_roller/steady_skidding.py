@@ -57,6 +57,12 @@ from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalF
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
 from bearing_mbs.models.cylindrical_roller.linearise import BearingLayout
+from bearing_mbs.models.cylindrical_roller.metrics import (
+    frictional_power_intensity,
+    law_traction,
+    pair_columns,
+    raceway_contact,
+)
 from bearing_mbs.models.cylindrical_roller.quasistatic import solve_radial
 from bearing_mbs.spec.fields import SpecError
 
@@ -105,6 +111,22 @@ class SkiddingSolution:
         the cage, as a roller-speed sensor on the cage measures it (0 rolling at the epicyclic speeds, 1 not
         turning in its pocket)."""
         return 1.0 - (self.roller_speeds - self.cage_speed) / self.epicyclic_roller_spin
+
+
+def orbit_power_intensity(spec, scene: Scene, solution: SkiddingSolution) -> tuple[np.ndarray, np.ndarray]:
+    """(inner, outer) frictional power intensity q = |μQ Δu|/(2 b l) [W/m²] of a roller's raceway contacts at the
+    solution's azimuths (:func:`.metrics.frictional_power_intensity`, the dynamic runs' measure): the traction of
+    each raceway's law at the solution's loads, sliding and rolling speeds (``inner_traction`` and
+    ``outer_traction`` also hold the hydrodynamic rolling resistance's tangential share, which is not sliding);
+    0 out of contact. ``spec`` and ``scene`` are those the solution was solved for."""
+    sign = {"inner_race": 1.0, "outer_race": -1.0}  # the inner pair's tangent is e_θ, the outer's −e_θ
+    states = {"inner_race": (solution.inner_loads, solution.inner_sliding, solution.inner_rolling),
+              "outer_race": (solution.outer_loads, solution.outer_sliding, solution.outer_rolling)}
+    intensity = []
+    for group, (load, sliding, rolling) in states.items():
+        traction = law_traction(scene, int(pair_columns(scene, group)[0]), load, sign[group] * sliding, rolling)
+        intensity.append(frictional_power_intensity(traction, sliding, load, raceway_contact(spec, scene, group)))
+    return intensity[0], intensity[1]
 
 
 #: Rows of the packed raceway and land laws (:func:`bearing_mbs.elements.contact_pairs.pack`).
