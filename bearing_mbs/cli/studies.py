@@ -176,13 +176,16 @@ def _skidding(args) -> int:
 
 def _add_skidding_map(commands) -> None:
     parser = commands.add_parser("skidding-map", help="steady cage and roller slip over load x oil temperature x "
-                                 "speed, from the quasi-static skidding balance")
+                                 "speed (x clearance), from the quasi-static skidding balance")
     parser.add_argument("scenario", help="lubricated bearing scenario TOML file at constant speed")
     add_output(parser, "output directory: skidding_map.{csv,md,png} and roller_slip.png (new or empty, or give "
                        "--overwrite)")
     parser.add_argument("--loads", default="68000,6800,2000,680,200", help="comma-separated radial loads [N]")
     parser.add_argument("--temperatures", default="40,60,80", help="comma-separated oil temperatures [°C]")
     parser.add_argument("--speeds", default="1000,1500,1800", help="comma-separated shaft speeds [rpm]")
+    parser.add_argument("--clearances", default=None,
+                        help="comma-separated diametral clearances [m] (bearing.diametral_clearance, about the "
+                             "raceways' pitch circle; default: the scenario's own)")
     parser.add_argument("--minimum-load", default=None,
                         help="LOW,HIGH [N]: the catalogue minimum-load band to mark on the figure")
     add_overrides(parser, "override any spec field of the base scenario (repeatable)")
@@ -204,9 +207,11 @@ def _skidding_map(args) -> int:
     spec = load_spec(args.scenario, args.set)
     loads, temperatures, speeds = (numbers(name, text) for name, text in (
         ("--loads", args.loads), ("--temperatures", args.temperatures), ("--speeds", args.speeds)))
-    skidding_map.check_grid(spec, loads, temperatures, speeds)
+    clearances = None if args.clearances is None else numbers("--clearances", args.clearances)
+    skidding_map.check_grid(spec, loads, temperatures, speeds, clearances)
     rows = skidding_map.run(spec, output_directory(args), loads, temperatures, speeds, band,
-                            figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
+                            figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress(),
+                            clearances=clearances)
     print(skidding_map.markdown_table(rows) + f"-> {args.out}")
     return exit_code([row["status"] for row in rows])
 
