@@ -101,7 +101,8 @@ def row(model="eyring", thermal=0, eyring_stress=5e6, shear_modulus=1e8, limitin
               "radius": SEED["radius"], "length": SEED["length"],
               "roughness": SEED["roughness"] if roughness is None else roughness, "eyring_stress": eyring_stress,
               "shear_modulus": shear_modulus, "limiting_shear": limiting_shear, "curve_a": curve[0],
-              "curve_b": curve[1], "curve_c": curve[2], "curve_d": curve[3], "rolling_resistance": 0}
+              "curve_b": curve[1], "curve_c": curve[2], "curve_d": curve[3], "rolling_resistance": 0,
+              "shear_heating": 0, "replenishment": 1.0}
     return np.array([values[c] for c in traction.TRACTION_COLUMNS], dtype=float)
 
 

@@ -25,14 +25,16 @@ from bearing_mbs.elements import Drag, Load, VelocityServo, pack_scene, scene_fo
 
 
 def lubricated_row(rng, k):
-    """A random traction row of either model (bearing_mbs.contact.traction), thermal reduction on or off."""
+    """A random traction row of either model (bearing_mbs.contact.traction), inlet heating, rolling resistance and
+    shear heating on or off, a random starvation factor."""
     values = {"model": k % 2, "film_formula": (k // 2) % 2, "thermal": (k + 1) // 2 % 2,
               "viscosity": rng.uniform(0.01, 0.5),
               "pressure_viscosity": rng.uniform(1e-8, 3e-8), "temperature_viscosity": rng.uniform(0.02, 0.07),
               "conductivity": 0.13, "modulus": rng.uniform(1e11, 4e11), "radius": rng.uniform(0.005, 0.05),
               "length": rng.uniform(0.01, 0.06), "roughness": rng.uniform(5e-8, 5e-7), "eyring_stress": 5e6,
               "shear_modulus": rng.uniform(1e7, 1e9), "limiting_shear": 0.07, "curve_a": -0.01, "curve_b": 4.0,
-              "curve_c": 40.0, "curve_d": 0.01, "rolling_resistance": k % 3 % 2}
+              "curve_c": 40.0, "curve_d": 0.01, "rolling_resistance": k % 3 % 2, "shear_heating": k // 4 % 2,
+              "replenishment": rng.uniform(0.4, 1.0)}
     return tuple(values[c] for c in TRACTION_COLUMNS)
 
 

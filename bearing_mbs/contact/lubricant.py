@@ -9,7 +9,17 @@ Viscosity–Temperature Equations and Charts for Liquid Petroleum or Hydrocarbon
 correlation of measurements: temperatures outside ``temperature_range`` are refused, not extrapolated. Density
 falls linearly, :math:`\rho(T) = \rho_{15}\,[1 - \beta_T (T - 15\,^\circ\mathrm C)]`, and the dynamic viscosity is
 η = ρν. The pressure–viscosity coefficient α [1/Pa] (Barus, η = η₀ e^{αp}) is a property of the oil, given at
-the operating temperature.
+``pressure_viscosity_temperature``; :meth:`Lubricant.pressure_viscosity_at` carries it to another temperature by the
+initial slope of Roelands' pressure–viscosity relation (C. J. A. Roelands, *Correlational aspects of the
+viscosity–temperature–pressure relationship of lubricating oils*, thesis, TH Delft, 1966; as given in B. J. Hamrock,
+*Fundamentals of Fluid Film Lubrication*, 1994, ch. 4),
+
+.. math:: \ln\frac{\eta}{\eta_0} = (\ln\eta_0 + 9.67)\left[\left(1 + \frac{p}{p_r}\right)^z - 1\right],
+          \qquad \alpha = \frac{z\,(\ln\eta_0 + 9.67)}{p_r},\qquad p_r = 1.96\cdot10^8\ \mathrm{Pa},
+
+η₀ [Pa s] the viscosity at ambient pressure and temperature T, z the oil's pressure–viscosity index, which Roelands
+found nearly independent of temperature (0.4–0.8, about 0.6 for mineral oils). With z held, α falls with the
+viscosity as the oil warms: :math:`\alpha(T) = \alpha(T_r)\,(\ln\eta_0(T) + 9.67)/(\ln\eta_0(T_r) + 9.67)`.
 """
 
 from __future__ import annotations
@@ -24,6 +34,8 @@ WALTHER_OFFSET = 0.7
 WALTHER_LOWEST = 2e-6
 #: Kelvin of 0 °C.
 ZERO_CELSIUS = 273.15
+#: Roelands' constants: ln of his limiting viscosity 6.31e-5 Pa s (negated) and his reference pressure p_r [Pa].
+ROELANDS_LOG_VISCOSITY, ROELANDS_PRESSURE = 9.67, 1.96e8
 
 
 class LubricantError(ValueError):
@@ -37,8 +49,8 @@ class LubricantError(ValueError):
 @dataclass(frozen=True)
 class Lubricant:
     """An oil: kinematic viscosity_40 and viscosity_100 [m²/s] at 40 and 100 °C (viscosity_100 < viscosity_40);
-    density_15 [kg/m³] at 15 °C; thermal_expansion β_T [1/K] of the density; pressure_viscosity α [1/Pa];
-    temperature_range (low, high) [°C] where its viscosity fit holds; thermal_conductivity k [W/(m K)]; name and
+    density_15 [kg/m³] at 15 °C; thermal_expansion β_T [1/K] of the density; pressure_viscosity α [1/Pa] at
+    pressure_viscosity_temperature [°C] (default 60, inside temperature_range); temperature_range (low, high) [°C] where its viscosity fit holds; thermal_conductivity k [W/(m K)]; name and
     source (where the values come from).
     """
 
@@ -51,6 +63,7 @@ class Lubricant:
     temperature_range: tuple[float, float] = (-10.0, 120.0)
     thermal_conductivity: float = 0.13
     source: str = ""
+    pressure_viscosity_temperature: float = 60.0
 
     def __post_init__(self):
         def refuse(field, value, allowed):
@@ -69,6 +82,9 @@ class Lubricant:
         low, high = self.temperature_range
         if not (-60.0 <= low < high <= 200.0):
             refuse("temperature_range", self.temperature_range, "(low, high) with -60 <= low < high <= 200 °C")
+        reference = self.pressure_viscosity_temperature
+        if not (isinstance(reference, (int, float)) and math.isfinite(reference) and low <= reference <= high):
+            refuse("pressure_viscosity_temperature", reference, f"must be in the fit's range [{low:g}, {high:g}] °C")
 
     def _walther(self) -> tuple[float, float]:
         points = [(40.0, self.viscosity_40), (100.0, self.viscosity_100)]
@@ -93,6 +109,19 @@ class Lubricant:
     def dynamic_viscosity(self, temperature: float) -> float:
         """η = ρν [Pa s] at ``temperature`` [°C]."""
         return self.density(temperature) * self.kinematic_viscosity(temperature)
+
+    def pressure_viscosity_at(self, temperature: float) -> float:
+        """α [1/Pa] at ``temperature`` [°C]: ``pressure_viscosity`` carried from its temperature by Roelands'
+        initial slope at a constant index z (module docstring)."""
+        def roelands(t):
+            return math.log(self.dynamic_viscosity(t)) + ROELANDS_LOG_VISCOSITY
+
+        return self.pressure_viscosity * roelands(temperature) / roelands(self.pressure_viscosity_temperature)
+
+    def roelands_index(self) -> float:
+        """Roelands' pressure–viscosity index z [-] that ``pressure_viscosity`` implies at its temperature."""
+        eta = self.dynamic_viscosity(self.pressure_viscosity_temperature)
+        return self.pressure_viscosity * ROELANDS_PRESSURE / (math.log(eta) + ROELANDS_LOG_VISCOSITY)
 
     def temperature_viscosity(self, temperature: float) -> float:
         r"""β = −d ln η/dT [1/K] at ``temperature`` [°C]: a central difference over ±0.5 K, one-sided at the ends

@@ -60,6 +60,7 @@ import numpy as np
 from numba.extending import register_jitable
 
 from bearing_mbs.contact import ehl, friction
+from bearing_mbs.contact.shear_heating import nahme_reduction
 
 #: Film-shear traction models in the order of their integer codes.
 TRACTION_MODELS = ("eyring", "curve")
@@ -67,17 +68,19 @@ _EYRING = TRACTION_MODELS.index("eyring")
 
 #: Columns of a pair's traction row (``PairLaw.traction``), in order: model and film-formula codes, thermal
 #: reduction (1/0), η0 [Pa s], α [1/Pa], β [1/K], k [W/(m K)], E' [Pa], R [m], l [m], σ [m], τ0 [Pa], G [Pa],
-#: Λ_L [-], the curve's A, B, C, D [-], and hydrodynamic rolling resistance (1/0).
+#: Λ_L [-], the curve's A, B, C, D [-], hydrodynamic rolling resistance (1/0), the film's shear heating (1/0) and
+#: the starvation's replenishment factor φ_rs in (0, 1] on film and rolling force (1: fully flooded).
 TRACTION_COLUMNS = (
     "model", "film_formula", "thermal", "viscosity", "pressure_viscosity", "temperature_viscosity",
     "conductivity", "modulus", "radius", "length", "roughness", "eyring_stress", "shear_modulus",
-    "limiting_shear", "curve_a", "curve_b", "curve_c", "curve_d", "rolling_resistance",
+    "limiting_shear", "curve_a", "curve_b", "curve_c", "curve_d", "rolling_resistance", "shear_heating",
+    "replenishment",
 )
 N_TRACTION_COLUMNS = len(TRACTION_COLUMNS)
 # Column indices, read by numba as compile-time constants (one order: TRACTION_COLUMNS).
 (_MODEL, _FORMULA, _THERMAL, _VISCOSITY, _PRESSURE_VISCOSITY, _TEMPERATURE_VISCOSITY, _CONDUCTIVITY, _MODULUS,
  _RADIUS, _LENGTH, _ROUGHNESS, _EYRING_STRESS, _SHEAR_MODULUS, _LIMITING_SHEAR, _CURVE_A, _CURVE_B, _CURVE_C,
- _CURVE_D, _ROLLING_RESISTANCE) = range(N_TRACTION_COLUMNS)
+ _CURVE_D, _ROLLING_RESISTANCE, _SHEAR_HEATING, _REPLENISHMENT) = range(N_TRACTION_COLUMNS)
 
 
 @register_jitable
@@ -88,15 +91,19 @@ def asperity_share(film_parameter):
 
 @register_jitable
 def eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity, eyring_stress,
-                    shear_modulus, limiting_shear):
+                    shear_modulus, limiting_shear, heating=0.0):
     """Film-shear traction coefficient μ_f [-] of the ``eyring`` model (signed like ``slip``); speed u > 0,
-    film h > 0 [m], mean pressure [Pa] > 0, half-width b [m]."""
+    film h > 0 [m], mean pressure [Pa] > 0, half-width b [m]; heating β/k [m/W] (0: isothermal) reduces the
+    viscous stress by the Couette film's shear heating (:func:`.shear_heating.nahme_reduction` at
+    Na = (β/k) τ_v |Δu| h)."""
     rate = abs(slip) / film
     viscous = 0.0
     if rate > 0.0:
         # asinh(x) with x = eta_0 e^{alpha p} rate/tau_0, through log x: e^{alpha p} alone overflows at extreme loads
         log_x = math.log(viscosity * rate / eyring_stress) + pressure_viscosity * mean_pressure
         viscous = eyring_stress * (log_x + math.log(2.0) if log_x > 20.0 else math.asinh(math.exp(log_x)))
+        if heating > 0.0:
+            viscous *= nahme_reduction(heating * viscous * abs(slip) * film)[0]
     elastic = shear_modulus * abs(slip) * half_width / (speed * film)
     total = viscous + elastic
     series = viscous * elastic / total if total > 0.0 else 0.0
@@ -121,12 +128,17 @@ def _contact_film(row, rolling, normal_force, regularisation_speed):
     central, minimum = ehl.film_thickness(int(row[_FORMULA]), speed, load, viscosity, row[_PRESSURE_VISCOSITY],
                                           row[_MODULUS], row[_RADIUS])
     loading = 0.0
+    reduction = row[_REPLENISHMENT]
     if row[_THERMAL] > 0.0:
         loading = ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY], row[_CONDUCTIVITY])
-        reduction = ehl.thermal_reduction(loading)
-        central *= reduction
-        minimum *= reduction
-    return speed, load, central, minimum, loading
+        reduction *= ehl.thermal_reduction(loading)
+    return speed, load, central * reduction, minimum * reduction, loading
+
+
+@register_jitable
+def _heating(row):
+    """β/k [m/W] of the film's shear heating (:func:`eyring_traction`), 0 with it off."""
+    return row[_TEMPERATURE_VISCOSITY] / row[_CONDUCTIVITY] if row[_SHEAR_HEATING] > 0.0 else 0.0
 
 
 @register_jitable
@@ -147,7 +159,7 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
         half_width = ehl.hertz_half_width(load, radius, modulus)
         film = max(central, roughness)
         fluid = eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
-                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
+                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR], _heating(row))
     else:
         fluid = curve_traction(slip / speed, row[_CURVE_A], row[_CURVE_B], row[_CURVE_C], row[_CURVE_D])
     boundary = boundary_coefficient * friction.erf_sign(slip, regularisation_speed)
@@ -156,13 +168,14 @@ def ehl_traction(row, slip, rolling, normal_force, boundary_coefficient, regular
 
 @register_jitable
 def rolling_force(row, rolling, normal_force):
-    """The hydrodynamic rolling force F_R φ_T [N] (magnitude) at rolling speed u [m/s] and normal force Q [N]; 0
-    with it off or out of contact."""
+    """The hydrodynamic rolling force F_R φ_T φ_rs [N] (magnitude) at rolling speed u [m/s] and normal force Q [N]
+    (with the inlet heating's and the starvation's factors, as the film has them); 0 with it off or out of
+    contact."""
     if row[_ROLLING_RESISTANCE] == 0.0 or normal_force <= 0.0:
         return 0.0
     speed, viscosity, length = abs(rolling), row[_VISCOSITY], row[_LENGTH]
-    force = ehl.rolling_force(speed, normal_force / length, viscosity, row[_PRESSURE_VISCOSITY], row[_MODULUS],
-                              row[_RADIUS], length)
+    force = row[_REPLENISHMENT] * ehl.rolling_force(speed, normal_force / length, viscosity,
+                                                    row[_PRESSURE_VISCOSITY], row[_MODULUS], row[_RADIUS], length)
     if row[_THERMAL] > 0.0:
         force *= ehl.thermal_reduction(ehl.thermal_loading(speed, viscosity, row[_TEMPERATURE_VISCOSITY],
                                                            row[_CONDUCTIVITY]))
@@ -199,11 +212,12 @@ def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisa
 
 @register_jitable
 def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
-                           eyring_stress, shear_modulus, limiting_shear):
+                           eyring_stress, shear_modulus, limiting_shear, heating=0.0):
     r"""Derivatives of :func:`eyring_traction`: (∂μ_f/∂Δu [s/m], ∂μ_f/∂ln u, ∂μ_f/∂ln h, ∂μ_f/∂ln p̄, ∂μ_f/∂ln b).
     With V the Eyring stress, E the elastic one and S = VE/(V + E): :math:`\mu_f = \mathrm{sign}(\Delta u)\Lambda_L
     \tanh(S/\Lambda_L\bar p)`, V a function of :math:`\ln x = \ln(\eta_0|\Delta u|/h\tau_0) + \alpha\bar p`, E of
-    :math:`|\Delta u| b/(u h)`; at zero slip S grows as :math:`|\Delta u|\,v_1e_1/(v_1 + e_1)`."""
+    :math:`|\Delta u| b/(u h)`; at zero slip S grows as :math:`|\Delta u|\,v_1e_1/(v_1 + e_1)`. With shear heating
+    V = V_iso R(Na), Na ∝ V_iso |Δu| h: d ln V = (1 + g) d ln V_iso + g (d ln|Δu| + d ln h), g = d ln R/d ln Na."""
     magnitude = abs(slip)
     log_a = math.log(viscosity / (film * eyring_stress)) + pressure_viscosity * mean_pressure  # x = a |Δu|
     viscous = viscous_log = viscous_magnitude = 0.0
@@ -219,6 +233,13 @@ def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosi
             viscous_magnitude = eyring_stress * math.exp(log_a) / math.sqrt(1.0 + x * x)
     else:
         viscous_magnitude = eyring_stress * math.exp(log_a)
+    viscous_film, viscous_pressure = -viscous_log, viscous_log * pressure_viscosity * mean_pressure  # over ln h, ln p̄
+    if heating > 0.0 and viscous > 0.0:
+        reduction, exponent = nahme_reduction(heating * viscous * magnitude * film)
+        viscous_magnitude = reduction * ((1.0 + exponent) * viscous_magnitude + exponent * viscous / magnitude)
+        viscous_film = reduction * ((1.0 + exponent) * viscous_film + exponent * viscous)
+        viscous_pressure *= reduction * (1.0 + exponent)
+        viscous *= reduction
     elastic_magnitude = shear_modulus * half_width / (speed * film)
     elastic = elastic_magnitude * magnitude
     total = viscous + elastic
@@ -236,9 +257,8 @@ def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosi
     per_series = sign * sech2 / mean_pressure
     return (sech2 / mean_pressure * series_magnitude,
             per_series * series_e * (-elastic),
-            per_series * (series_v * (-viscous_log) + series_e * (-elastic)),
-            per_series * series_v * viscous_log * pressure_viscosity * mean_pressure
-            - sign * limiting_shear * sech2 * y,
+            per_series * (series_v * viscous_film + series_e * (-elastic)),
+            per_series * series_v * viscous_pressure - sign * limiting_shear * sech2 * y,
             per_series * series_e * elastic)
 
 
@@ -266,11 +286,12 @@ def ehl_traction_slopes(row, slip, rolling, normal_force, boundary_coefficient, 
         floored = central <= roughness
         film_speed = 0.0 if floored else central_u + thermal
         film_load = 0.0 if floored else central_w
+        heating = _heating(row)
         fluid = eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
-                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
+                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR], heating)
         fluid_slip, by_speed, by_film, by_pressure, by_width = eyring_traction_slopes(
             slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity, row[_EYRING_STRESS],
-            row[_SHEAR_MODULUS], row[_LIMITING_SHEAR])
+            row[_SHEAR_MODULUS], row[_LIMITING_SHEAR], heating)
         fluid_speed = by_speed + by_film * film_speed  # over ln u
         fluid_load = by_film * film_load + 0.5 * (by_pressure + by_width)  # over ln Q: p̄ and b grow as Q^(1/2)
     else:

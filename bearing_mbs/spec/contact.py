@@ -41,7 +41,9 @@ class ContactSpec:
     traction_curve: (A, B, C, D) of the ``curve`` model, with B > 0, C > 0 and |A + D| <= 1e-3 (no jump at zero
     slip); required by it. ehl_rolling_resistance: the contact's hydrodynamic rolling resistance (Zhou–Hoeprich's,
     Martin's rigid one at light load: :func:`bearing_mbs.contact.ehl.rolling_force`), added to the dry arm's
-    (default false; ``ehl`` only).
+    (default false; ``ehl`` only). shear_heating: the film's shear heating reduces the ``eyring`` model's viscous
+    stress (the Couette film's Nahme reduction, :mod:`bearing_mbs.contact.shear_heating`; default false, ``ehl``
+    with ``eyring`` only).
     """
 
     normal_law: str = "lankarani_nikravesh"
@@ -63,6 +65,7 @@ class ContactSpec:
     limiting_shear_coefficient: float = 0.07
     traction_curve: tuple[float, ...] | None = None
     ehl_rolling_resistance: bool = False
+    shear_heating: bool = False
 
     def __post_init__(self):
         one_of("normal_law", self.normal_law, NORMAL_LAWS)
@@ -109,6 +112,11 @@ class ContactSpec:
         if self.ehl_rolling_resistance:
             require(self.friction_law == "ehl", "ehl_rolling_resistance", True,
                     f"needs friction_law = 'ehl' (the film it comes from), not {self.friction_law!r}")
+        require(isinstance(self.shear_heating, bool), "shear_heating", self.shear_heating, "must be true or false")
+        if self.shear_heating:
+            require(self.friction_law == "ehl" and self.traction_model == "eyring", "shear_heating", True,
+                    "needs friction_law = 'ehl' with traction_model = 'eyring' (the film's viscous stress it "
+                    f"reduces), not {self.friction_law!r} with {self.traction_model!r}")
         if self.friction_law == "ehl" and self.traction_model == "curve":
             require(self.traction_curve is not None, "traction_curve", None,
                     "the curve traction model needs (A, B, C, D)")

@@ -51,6 +51,7 @@ from bearing_mbs.models.cylindrical_roller.lubrication import (
     mixture_density,
     orbital_drag_coefficient,
     palmgren_drag_moment,
+    replenishment_factor,
     roller_drag_coefficient,
     spin_drag_coefficient,
 )
@@ -178,16 +179,38 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
         oil, temperature = lubricant.lubricant(), lubricant.temperature
         density = mixture_density(lubricant.oil_fraction, oil.density(temperature))
         orbital_speed = abs(cage_speed) * geometry.pitch_diameter / 2
-        return {"quadratic": orbital_drag_coefficient(density, oil.kinematic_viscosity(temperature),
-                                                      geometry.roller_diameter, geometry.roller_length, orbital_speed),
-                "angular": spin_drag_coefficient(lubricant.oil_fraction * oil.dynamic_viscosity(temperature),
-                                                 geometry.roller_diameter / 2, geometry.roller_length)}
+        churning = {"quadratic": orbital_drag_coefficient(density, oil.kinematic_viscosity(temperature),
+                                                          geometry.roller_diameter, geometry.roller_length,
+                                                          orbital_speed),
+                    "angular": spin_drag_coefficient(lubricant.oil_fraction * oil.dynamic_viscosity(temperature),
+                                                     geometry.roller_diameter / 2, geometry.roller_length)}
+        if lubricant.viscous_drag_factor > 0:
+            moment = palmgren_drag_moment(lubricant.viscous_drag_factor, oil.kinematic_viscosity(temperature),
+                                          reference_rpm, geometry.pitch_diameter)
+            churning["linear"] = roller_drag_coefficient(moment, inner_speed, geometry.rollers,
+                                                         geometry.pitch_diameter, cage_speed)
+        return churning
     moment = lubricant.drag_moment
     if moment is None:
         moment = palmgren_drag_moment(lubricant.drag_factor, lubricant.operating_viscosity(), reference_rpm,
                                       geometry.pitch_diameter)
     linear = roller_drag_coefficient(moment, inner_speed, geometry.rollers, geometry.pitch_diameter, cage_speed)
     return {"linear": linear} if linear > 0 else {}
+
+
+def starvation(spec: Spec, geometry: BearingGeometry) -> float:
+    """The raceway contacts' replenishment factor φ_rs (:func:`.lubrication.replenishment_factor`) at the oil's
+    viscosity and the drag's reference speed; 1 (fully flooded) without ``[lubricant] starvation`` or at rest. The
+    outside diameter is d_o + (d_i − d): an outer ring as thick as the inner one."""
+    lubricant = spec.lubricant
+    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec.drive)
+    if not lubricant.starvation or not reference_rpm:
+        return 1.0
+    bore = spec.bearing.inner_ring_bore
+    outside = geometry.outer_race_diameter + geometry.inner_race_diameter - bore
+    return replenishment_factor(lubricant.replenishment_constant,
+                                lubricant.lubricant().kinematic_viscosity(lubricant.temperature), reference_rpm,
+                                bore, outside)
 
 
 def cage_drag(spec: Spec, geometry: BearingGeometry) -> float:
@@ -248,7 +271,7 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
     if contact.friction_law == "ehl":  # the spec admits it on the raceways only
         raceway = geometry.inner_race_diameter if group == "inner_race" else geometry.outer_race_diameter
         radius = reduced_radius(raceway / 2, geometry.roller_diameter / 2, group == "outer_race")
-        row = traction_row(contact, spec.lubricant, 2 * modulus, radius, length)
+        row = traction_row(contact, spec.lubricant, 2 * modulus, radius, length, starvation(spec, geometry))
     if contact.stiffness_model == "given":
         return pair_law(contact, traction=row)
     if contact.stiffness_model == "document":
@@ -260,20 +283,23 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
     return pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT, traction=row)
 
 
-def traction_row(contact, lubricant, reduced_modulus: float, radius: float, length: float) -> tuple[float, ...]:
+def traction_row(contact, lubricant, reduced_modulus: float, radius: float, length: float,
+                 replenishment: float) -> tuple[float, ...]:
     """The lubricated-traction row (:data:`~bearing_mbs.contact.traction.TRACTION_COLUMNS`) of a raceway group:
-    its contact settings, the oil at the operating temperature, E' [Pa], the reduced radius R [m] and the contact
-    length l [m]."""
+    its contact settings, the oil at the operating temperature, E' [Pa], the reduced radius R [m], the contact
+    length l [m] and the starvation's replenishment factor φ_rs (:func:`starvation`)."""
     oil, temperature = lubricant.lubricant(), lubricant.temperature
     values = {
         "model": TRACTION_MODELS.index(contact.traction_model),
         "film_formula": FILM_FORMULAS.index(contact.film_formula),
         "thermal": float(contact.thermal_reduction), "viscosity": oil.dynamic_viscosity(temperature),
-        "pressure_viscosity": oil.pressure_viscosity, "temperature_viscosity": oil.temperature_viscosity(temperature),
+        "pressure_viscosity": lubricant.operating_pressure_viscosity(),
+        "temperature_viscosity": oil.temperature_viscosity(temperature),
         "conductivity": oil.thermal_conductivity, "modulus": reduced_modulus, "radius": radius, "length": length,
         "roughness": contact.roughness, "eyring_stress": contact.eyring_stress, "shear_modulus": contact.shear_modulus,
         "limiting_shear": contact.limiting_shear_coefficient,
         "rolling_resistance": float(contact.ehl_rolling_resistance),
+        "shear_heating": float(contact.shear_heating), "replenishment": replenishment,
     }
     curve = contact.traction_curve or (0.0, 0.0, 0.0, 0.0)
     values.update(zip(("curve_a", "curve_b", "curve_c", "curve_d"), curve))

@@ -341,6 +341,9 @@ class LoadSpec:
 
 #: The lubricant's drag on the rolling set (:mod:`bearing_mbs.models.cylindrical_roller.lubrication`).
 DRAG_MODELS = ("palmgren", "churning", "none")
+#: How α depends on the temperature: held at the oil's value, or carried by Roelands' index
+#: (:meth:`bearing_mbs.contact.lubricant.Lubricant.pressure_viscosity_at`).
+PRESSURE_VISCOSITY_MODELS = ("constant", "roelands")
 
 
 @dataclass(frozen=True)
@@ -352,9 +355,17 @@ class LubricantSpec:
     its own viscosity_40 and viscosity_100 [m²/s] (kinematic, at 40 and 100 °C; both, in [2e-6, 1e-2] and
     [2e-6, 1e-3], and viscosity_100 < viscosity_40), with density_15 [kg/m³] (default 870), thermal_expansion
     [1/K] of the density (default 6.4e-4),
-    pressure_viscosity α [1/Pa] (default 2e-8) and thermal_conductivity [W/(m K)] (default 0.13) replacing the
-    preset's. temperature [°C]: the operating oil temperature, inside the oil's viscosity fit (-10 to 120 °C, refused
-    outside, not extrapolated); lubricated traction (``friction_law = "ehl"``) needs it.
+    pressure_viscosity α [1/Pa] (default 2e-8) at pressure_viscosity_temperature [°C] (default 60) and
+    thermal_conductivity [W/(m K)] (default 0.13) replacing the preset's. temperature [°C]: the operating oil
+    temperature, inside the oil's viscosity fit (-10 to 120 °C, refused outside, not extrapolated); lubricated
+    traction (``friction_law = "ehl"``) needs it. pressure_viscosity_model: ``constant`` (default: α as given, at
+    every temperature) or ``roelands`` (α carried to ``temperature`` at Roelands' constant index).
+
+    starvation (default false): the raceway contacts' inlets are starved by the rolling set's kinematics, a
+    replenishment factor φ_rs on their films and hydrodynamic rolling forces
+    (:func:`~bearing_mbs.models.cylindrical_roller.lubrication.replenishment_factor`, SKF's), at the oil's viscosity
+    and ``reference_rpm``; replenishment_constant K_rs in [1e-8, 1e-7] (default 3e-8, SKF's for oil jet and
+    low-level oil bath; 6e-8 for oil–air and grease).
 
     The drag: model ``palmgren`` (default), ``churning`` or ``none``.
 
@@ -368,7 +379,9 @@ class LubricantSpec:
       the oil–air mixture; needs the oil and its temperature. oil_fraction in (0, 1]: the oil's volume fraction
       in the bearing cavity (default 0.05, our choice: no measurement of the seed bearing's cavity is at hand, so
       sweep it). reference_rpm: the speed at which the drag coefficient's Reynolds number is taken (default: the
-      drive's highest speed).
+      drive's highest speed). viscous_drag_factor f_v in [0, 10] (default 0: none): adds to each roller the linear
+      drag of Palmgren's M_0 at f_0 = f_v with the oil's viscosity (the viscous share of the churning, which the
+      form drag of the mixture lacks; the factor is calibrated as docs/skidding.md states).
 
     land_film (default false): the cage rides on an oil film on the outer ring's land, a short journal bearing
     (:mod:`bearing_mbs.fluid_film`) of the land clearance, as wide as the cage's side rings together
@@ -399,6 +412,11 @@ class LubricantSpec:
     oil_fraction: float = 0.05
     land_film: bool = False
     pocket_film: bool = False
+    pressure_viscosity_temperature: float | None = None
+    pressure_viscosity_model: str = "constant"
+    starvation: bool = False
+    replenishment_constant: float = 3e-8
+    viscous_drag_factor: float = 0.0
 
     def __post_init__(self):
         one_of("model", self.model, DRAG_MODELS)
@@ -429,6 +447,18 @@ class LubricantSpec:
         if self.model == "churning":
             require(self.temperature is not None, "temperature", None, "the churning drag needs the oil and its "
                     "operating temperature [°C] (its density and viscosity)")
+        one_of("pressure_viscosity_model", self.pressure_viscosity_model, PRESSURE_VISCOSITY_MODELS)
+        for name in ("starvation", "land_film", "pocket_film"):
+            require(isinstance(getattr(self, name), bool), name, getattr(self, name), "must be true or false")
+        in_range("replenishment_constant", self.replenishment_constant, 1e-8, 1e-7, "-")
+        in_range("viscous_drag_factor", self.viscous_drag_factor, 0.0, 10.0, "-")
+        if self.starvation or self.viscous_drag_factor > 0:
+            field_name = "starvation" if self.starvation else "viscous_drag_factor"
+            require(self.temperature is not None, field_name, getattr(self, field_name),
+                    "needs the oil and its operating temperature [°C] (its viscosity)")
+        if self.viscous_drag_factor > 0:
+            require(self.model == "churning", "viscous_drag_factor", self.viscous_drag_factor,
+                    f"adds to the churning drag: needs model = 'churning', not {self.model!r}")
 
     def lubricant(self) -> Lubricant | None:
         """The oil (a preset with this table's values over it), or None if the table names none."""
@@ -436,13 +466,21 @@ class LubricantSpec:
             return None
         own = {name: getattr(self, name) for name in ("viscosity_40", "viscosity_100", "density_15",
                                                        "thermal_expansion", "pressure_viscosity",
-                                                       "thermal_conductivity") if getattr(self, name) is not None}
+                                                       "thermal_conductivity", "pressure_viscosity_temperature")
+               if getattr(self, name) is not None}
         try:
             if self.oil is not None:
                 return replace(LUBRICANTS[self.oil], **own)
             return Lubricant("custom oil", **own, source="the scenario's [lubricant]")
         except LubricantError as error:
             raise SpecError(error.field, error.value, error.allowed) from None
+
+    def operating_pressure_viscosity(self) -> float:
+        """α [1/Pa] at the operating temperature, by ``pressure_viscosity_model``."""
+        oil = self.lubricant()
+        if self.pressure_viscosity_model == "roelands":
+            return oil.pressure_viscosity_at(self.temperature)
+        return oil.pressure_viscosity
 
     def operating_viscosity(self) -> float:
         """Kinematic viscosity [m²/s] for Palmgren's M_0: given, else the oil's at the temperature, else 32e-6."""
