@@ -67,6 +67,22 @@ def test_shipped_study_loads_and_samples_a_morris_design():
     assert len(keys) == len(X) and len(runs) <= len(X)  # Morris trajectories may share points: one run each
 
 
+@pytest.mark.parametrize("path", sorted((ROOT / "scenarios").glob("study_*.toml")), ids=lambda path: path.stem)
+def test_every_shipped_study_validates_and_its_design_points_are_valid_inputs(path):
+    """Each shipped study file parses and validates, its design has the sampler's size within the bounds, and every
+    design point is a valid input of its evaluator (plan validates them all), without running anything."""
+    study = load_study(path)
+    D, N = len(study.parameters), study.method.samples
+    X = sample(study)
+    size = {"morris": N * (D + 1), "sobol": N * (2 * D + 2 if study.method.second_order else D + 2)}
+    assert X.shape == (size[study.method.sampler], D)
+    for j, p in enumerate(study.parameters):
+        assert X[:, j].min() >= p.bounds[0] and X[:, j].max() <= p.bounds[1]
+    keys, runs = plan(study, X)
+    assert len(keys) == len(X) and set(keys) == set(runs)
+    assert set(study.outputs) <= set(study.model.outputs())
+
+
 @pytest.mark.parametrize(
     "method, parameters, field, message",
     [
