@@ -57,7 +57,7 @@ def test_the_balance_evaluates_a_sample_on_the_runs_spec_and_a_point_without_bal
     assert isinstance(study.model, SkiddingBalanceModel)
     X = sample(study)
     keys, runs = plan(study, X)
-    as_run = load_study(balance_study(tmp_path, evaluate="run"))
+    as_run = load_study(balance_study(tmp_path, evaluate="run", outputs='"cage_slip"'))
     run_keys, run_runs = plan(as_run, X)
     assert [runs[k].inputs for k in keys] == [run_runs[k].inputs for k in run_keys]  # the same spec as a run's
     assert set(keys).isdisjoint(run_keys)  # but another run: the evaluator is part of its identity
