@@ -156,3 +156,10 @@ def test_a_clearance_the_bearing_refuses_is_refused_before_anything_runs(clearan
     with pytest.raises(SpecError) as error:
         skidding_map.check_grid(load_spec(STEADY), [6800.0], [60.0], [1500.0], clearances)
     assert error.value.field == "--clearances"
+
+
+def test_the_command_refuses_a_bad_clearance_with_exit_status_2(tmp_path, capsys):
+    out = tmp_path / "map"
+    assert main(["skidding-map", str(STEADY), "--out", str(out), "--clearances", "0.01", "--quiet"]) == 2
+    assert not out.exists()
+    assert "--clearances" in capsys.readouterr().err
