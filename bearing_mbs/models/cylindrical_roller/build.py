@@ -12,6 +12,8 @@ ring is fixed: it is the ground. Per roller: an inner-raceway pair (circle–cir
   model of a cage whose pocket play takes up its float on the land. The pockets then turn the cage but do
   not push it sideways, so a roller-guided constraint cage is held on the axis (its translation fixed) and a
   land-guided one rests on its land under gravity;
+  with ``[lubricant] pocket_film`` the same two film pairs as the penalty cage's, whose shear of the roller's spin
+  in the cage (the roller centred in its pocket) brakes the roller and drags the cage;
 * ``none``: no cage body, and a roller–roller pair between neighbours (Z pairs).
 
 A land-guided cage adds one cage–land pair. The inner ring turns under a velocity servo or the gear train;
@@ -112,12 +114,13 @@ def build_bearing_scene(spec: Spec) -> Scene:
             for label, point in geometry.pocket_points(k).items():
                 add("pocket", ContactPair(f"roller{k}-pocket_{label}", "circle_point", CAGE, roller, laws["pocket"],
                                          radius_b=r_w, anchor=point))
-            for label, (point, normal) in (geometry.pocket_walls(k).items() if film_law else ()):
-                add("pocket_film", ContactPair(f"roller{k}-pocket_{label}-film", "circle_line", CAGE, roller,
-                                               film_law, radius_b=r_w, anchor=point, direction=normal))
         elif spec.cage.model == "constraint":
             psi = geometry.roller_angles[k]
             constraints.append(OrbitConstraint(f"roller{k}-pocket", CAGE, roller, (math.cos(psi), math.sin(psi))))
+        if caged and film_law:
+            for label, (point, normal) in geometry.pocket_walls(k).items():
+                add("pocket_film", ContactPair(f"roller{k}-pocket_{label}-film", "circle_line", CAGE, roller,
+                                               film_law, radius_b=r_w, anchor=point, direction=normal))
         else:
             neighbour = first_roller + (k + 1) % geometry.rollers
             add("roller", ContactPair(f"roller{k}-roller{(k + 1) % geometry.rollers}", "circle_circle", roller,

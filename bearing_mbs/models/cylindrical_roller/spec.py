@@ -388,8 +388,9 @@ class LubricantSpec:
     (cage_width − roller_length), in the oil at ``temperature``; it carries the cage and shears at the cage's speed.
     The dry land contact stays, for metal contact should the film collapse.
 
-    pocket_film (default false): the rollers of the penalty cage run against the oil film of each flat pocket wall
-    (the other cage models have no pocket contacts, as for ``[contact.pocket]``),
+    pocket_film (default false): the rollers of the penalty and the constraint cage run against the oil film of each
+    flat pocket wall (a cage model ``none`` has no pockets; the constraint cage holds each roller centred in its
+    pocket, where the films shear its spin in the cage),
     at the pocket clearance from the centred roller like the edges, over the roller's length
     (:mod:`bearing_mbs.fluid_film.cylinder_plane`: wedge, squeeze and shear of a cylinder on a plane, fully
     flooded), in the oil at ``temperature``; it cushions a roller striking a bar. Below three times the pocket's

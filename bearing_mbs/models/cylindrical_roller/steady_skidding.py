@@ -52,7 +52,8 @@ from scipy.optimize import brentq
 from bearing_mbs.contact import kernel
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
-from bearing_mbs.elements.contact_pairs import PairArrays, pack
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
+from bearing_mbs.elements.contact_pairs import PairArrays, add_forces_twin, pack
 from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalFilm
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
 from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
@@ -148,6 +149,8 @@ class _Bearing:
     gravity: np.ndarray
     pocket_contacts: bool
     land_film: JournalFilm | None
+    pocket_film: tuple[float, float] = (0.0, 0.0)  # a constraint cage's oiled pockets, per rad/s of the roller's spin
+    # in the cage: the moment on the roller and the torque on the cage [N m s/rad] (:func:`pocket_film_coefficients`)
 
 
 def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
@@ -197,14 +200,32 @@ def _read(scene: Scene) -> _Bearing:
     cage = scene.bodies[cage_index]
     land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
     raceways = [scene.pairs[int(pairs[group][0])] for group in ("inner_race", "outer_race")]
+    constrained = any(isinstance(c, OrbitConstraint) for c in scene.constraints)
     return _Bearing(layout, applied[-1],
                     drag_sum(layout.rollers[0], "linear", "quadratic", "angular", "angular_quadratic"),
                     drag_sum(cage_index, "angular", "angular_quadratic"), cage.mass,
                     land.radius_b if land is not None else 0.0,
                     pack(raceways + ([land] if land is not None else [])),
-                    np.asarray(scene.gravity, float),
-                    not any(isinstance(c, OrbitConstraint) for c in scene.constraints),
-                    next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None))
+                    np.asarray(scene.gravity, float), not constrained,
+                    next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None),
+                    pocket_film_coefficients(scene, cage_index) if constrained and "pocket_film" in pairs else (0.0, 0.0))
+
+
+def pocket_film_coefficients(scene: Scene, cage_index: int) -> tuple[float, float]:
+    """(moment on the roller, torque on the cage) [N m s/rad] per rad/s of a roller's spin in the cage, from its
+    pocket walls' oil films (the film pairs' own law, :func:`bearing_mbs.elements.contact_pairs.add_forces_twin`) with
+    the roller centred in its pocket, where the constraint cage holds it: at a fixed gap the films' forces are linear
+    in the speeds (Reynolds' equation is), so one evaluation at 1 rad/s gives both."""
+    films = np.asarray(scene.topology.pairs["pocket_film"])[0]
+    roller = scene.pairs[int(films[0])].body_b
+    q = np.array([coordinate for body in scene.bodies for coordinate in body.position], float)
+    v = np.zeros_like(q)
+    v[3 * roller + 2] = 1.0
+    forces = np.zeros_like(q)
+    packed = pack([scene.pairs[int(k)] for k in films])
+    add_forces_twin(packed, 0.0, q, v, np.zeros(len(films)), forces, np.zeros((len(films), N_PAIR_OUTPUTS)),
+                    np.zeros(2), True)
+    return float(forces[3 * roller + 2]), float(forces[3 * cage_index + 2])
 
 
 def _contact(laws: PairArrays, k: int, load, sliding, relative_spin, rolling, orientation, raceway_radius, radius):
@@ -230,7 +251,8 @@ class _RollerForces(NamedTuple):
     outer_rolling: float  # u_o [m/s]
     pocket_force: float  # P [N]
     ring_torque: float  # the roller's torque on the inner ring [N m]
-    power_loss: float  # dissipated at the roller's contacts and by its drags [W]
+    power_loss: float  # dissipated at the roller's contacts, by its drags and in its pocket films [W]
+    film_torque: float  # its pocket films' torque on the cage [N m] (constraint cage, oiled pockets)
 
 
 def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: float) -> _RollerForces:
@@ -250,9 +272,11 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     f_o_tangent, m_o = _contact(bearing.laws, _OUTER, q_o, -du_o, spin, u_o, -1.0, r_o, r)
     f_o = -f_o_tangent
     drag = (linear + quadratic * abs(orbit)) * orbit
-    loss = -f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + spin_drag * spin
-    return _RollerForces(-r * f_i + r * f_o + m_i + m_o - spin_drag, f_i, f_o, du_i, du_o, u_i, u_o,
-                         drag - f_i - f_o, -r_i * f_i - m_i, loss)
+    film_moment, film_torque = (coefficient * (spin - cage_speed) for coefficient in bearing.pocket_film)
+    loss = (-f_i * du_i - f_o * du_o - m_i * (spin - omega_i) - m_o * spin + drag * orbit + spin_drag * spin
+            - film_moment * spin - film_torque * cage_speed)
+    return _RollerForces(-r * f_i + r * f_o + m_i + m_o - spin_drag + film_moment, f_i, f_o, du_i, du_o, u_i, u_o,
+                         drag - f_i - f_o, -r_i * f_i - m_i, loss, film_torque)
 
 
 def _loads_around_the_orbit(bearing: _Bearing, cage_speed: float, phases: int):
@@ -270,8 +294,9 @@ def _loads_around_the_orbit(bearing: _Bearing, cage_speed: float, phases: int):
     return psi[order], q_i, q_o
 
 
-#: Orbit means integrated alongside a roller's spin: pocket force [N], torque on the ring [N m], power loss [W].
-_MEANS = ("pocket_force", "ring_torque", "power_loss")
+#: Orbit means integrated alongside a roller's spin: pocket force [N], torque on the ring [N m], power loss [W],
+#: pocket films' torque on the cage [N m].
+_MEANS = ("pocket_force", "ring_torque", "power_loss", "film_torque")
 
 
 def _spin_around_the_orbit(bearing: _Bearing, cage_speed: float, psi, q_i, q_o):
@@ -301,8 +326,8 @@ def _spin_around_the_orbit(bearing: _Bearing, cage_speed: float, psi, q_i, q_o):
     times = np.append(psi_from / cage_speed, period)
 
     def orbit(spin0):
-        solution = solve_ivp(rate, (0.0, period), [spin0, 0.0, 0.0, 0.0], method="LSODA", rtol=1e-10,
-                             atol=np.array([1e-9, 1e-12, 1e-12, 1e-9]), t_eval=times)
+        solution = solve_ivp(rate, (0.0, period), [spin0, 0.0, 0.0, 0.0, 0.0], method="LSODA", rtol=1e-10,
+                             atol=np.array([1e-9, 1e-12, 1e-12, 1e-9, 1e-12]), t_eval=times)
         if not solution.success:
             raise ArithmeticError(f"the roller-spin orbit failed at cage speed {cage_speed:g} rad/s: "
                                   f"{solution.message}")
@@ -361,7 +386,7 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
         land = -laws.friction_coefficient[_LAND] * float(np.mean(normal)) * bearing.cage_radius * sign
     angular, angular_quadratic = bearing.cage_drag
     churning = -(angular + angular_quadratic * abs(cage_speed)) * cage_speed
-    torque = -radius * rollers * means["pocket_force"] + land + churning
+    torque = -radius * rollers * means["pocket_force"] + rollers * means["film_torque"] + land + churning
     state = {"roller_angles": psi, "inner_loads": q_i, "outer_loads": q_o, "roller_speeds": spins,
              "pocket_forces": pocket, "inner_traction": rows.inner_traction, "outer_traction": rows.outer_traction,
              "inner_sliding": rows.inner_sliding, "outer_sliding": rows.outer_sliding,
