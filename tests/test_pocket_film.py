@@ -62,9 +62,9 @@ def test_a_roller_thrown_at_an_oiled_wall_stops_where_the_squeeze_film_says(engi
 @pytest.fixture(scope="module")
 def oiled_and_dry_pockets():
     """The lubricated seed bearing at its nominal load with the penalty cage, 20 ms, each engine with oiled
-    pockets and Exudyn with dry ones; at the document's zero clearance (with the operating clearance the unloaded
-    rollers rattle in their pockets and Exudyn's generalized-α at 1e-5 s reads the 10-20 ms cage slip 2.5 % off the
-    reference: docs/skidding.md)."""
+    pockets and Exudyn with dry ones; at the document's zero clearance (with the operating clearance the load,
+    applied at once, drops the ring onto its rollers, and Exudyn's generalized-α at 1e-5 s reads the 10-20 ms cage
+    slip 2.5 % off the reference, 0.5 % at 1e-6 s: tests/test_skidding_second_pass.py)."""
     def run(engine, film):
         overrides = ["cage.model=penalty", f"lubricant.pocket_film={str(film).lower()}", f"solver.engine={engine}",
                      "scenario.end_time=0.02", "analysis.start=0.01", "solver.reference.step=2e-7",

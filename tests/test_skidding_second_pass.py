@@ -24,7 +24,7 @@ from cases import SCENARIOS
 #: Every term of the second pass switched off, and the document's zero clearance.
 SECOND_PASS_OFF = ["bearing.diametral_clearance=0", "contact.inner_race.shear_heating=false",
                    "contact.outer_race.shear_heating=false", "lubricant.starvation=false",
-                   "lubricant.pressure_viscosity_model=constant", "lubricant.viscous_drag_factor=0",
+                   "lubricant.viscous_drag_factor=0",
                    "lubricant.pocket_film=false"]
 
 
@@ -45,9 +45,10 @@ def test_the_drive_power_equals_the_losses_with_every_term_on():
     assert solution.power_loss == pytest.approx(supplied, rel=1e-6)
 
 
-@pytest.mark.parametrize("load", [680.0, 2000.0])
-def test_warmer_oil_skids_less_at_light_load(load):
-    """40 → 60 → 80 °C at 1500 rpm on the balance: the slip falls at each step (by more than 1 % of itself)."""
+@pytest.mark.parametrize("load", [680.0, 2000.0, 6800.0])
+def test_warmer_oil_skids_less(load):
+    """40 → 60 → 80 °C at 1500 rpm on the balance, the shipped variant (α held at its 60 °C value): the slip falls at
+    each step (by more than 1 % of itself), at every load of the map where it exceeds 0.1 %."""
     slips = [steady_slip(f"load.radial={load}", f"lubricant.temperature={t}") for t in (40, 60, 80)]
     assert slips[0] > 1.01 * slips[1] > 1.01**2 * slips[2] > 0.001
 
@@ -61,12 +62,14 @@ ENGINES = {
 @pytest.mark.slow
 @pytest.mark.parametrize("load", [68000.0, 6800.0, 2000.0])
 def test_engines_agree_on_the_cage_slip_with_every_term_on(load):
-    """The shipped lubricated variant (every second-pass term on) from a rolling start, over 10-20 ms: Exudyn's
-    generalized-α and the reference RK4 agree on the mean cage slip within 1 % (of itself, or 1e-5 absolute where
-    the slip is below 0.1 %)."""
+    """The shipped lubricated variant (every second-pass term on) from a rolling start, the load raised over 5 ms,
+    over 10-20 ms: Exudyn's generalized-α and the reference RK4 agree on the mean cage slip within 1 % (of itself, or
+    1e-5 absolute where the slip is below 0.1 %). Applied at once, the load drops the ring through the clearance
+    onto the rollers, a transient that the two integrators follow apart (at 6.8 kN 0.339 % and 0.315 % for Exudyn at
+    1e-5 s and 1e-6 s, 0.328 % and 0.330 % for RK4 at 2e-7 s and 1e-7 s; at zero clearance they agree to 2e-5)."""
     slips = {}
     for engine, settings in ENGINES.items():
-        spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [*settings, f"load.radial={load}",
+        spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [*settings, f"load.radial={load}", "load.ramp_time=0.005",
                                                               "scenario.end_time=0.02", "analysis.start=0.01"])
         scene = build_scene(spec)
         result = simulate(scene, spec.solver, spec.scenario.end_time)

@@ -50,7 +50,8 @@ class LubricantError(ValueError):
 class Lubricant:
     """An oil: kinematic viscosity_40 and viscosity_100 [m²/s] at 40 and 100 °C (viscosity_100 < viscosity_40);
     density_15 [kg/m³] at 15 °C; thermal_expansion β_T [1/K] of the density; pressure_viscosity α [1/Pa] at
-    pressure_viscosity_temperature [°C] (default 60, inside temperature_range); temperature_range (low, high) [°C] where its viscosity fit holds; thermal_conductivity k [W/(m K)]; name and
+    pressure_viscosity_temperature [°C] (default 60, inside temperature_range); temperature_range (low, high) [°C]
+    where its viscosity fit holds; thermal_conductivity k [W/(m K)]; name and
     source (where the values come from).
     """
 
@@ -136,7 +137,9 @@ class Lubricant:
 # (e.g. Mobilgear 600 XP 320: 320 and 24.1 cSt; Mobil SHC Gear 320 WT and Castrol Optigear Synthetic X 320 list
 # 34-38 cSt at 100 °C). α: mineral oils 1.8-2.4e-8 1/Pa, PAOs 1.3-1.7e-8 1/Pa between 40 and 100 °C (P. W. Gold
 # et al., "Viscosity-pressure-temperature behaviour of mineral and synthetic oils", J. Synth. Lubr. 18 (2001)
-# 51-79). Densities at 15 °C and conductivities are typical values of the two base-oil families.
+# 51-79), taken at 60 °C (our choice: inside the band, at the seed scenarios' oil temperature; Roelands' index z
+# then follows, 0.59 for the mineral oils and 0.40-0.42 for the PAOs, in Roelands' 0.4-0.8). Densities at 15 °C and
+# conductivities are typical values of the two base-oil families.
 PRESETS = {
     "iso_vg_220_mineral": Lubricant("ISO VG 220 mineral gear oil", 220e-6, 19.0e-6, density_15=895.0,
                                     pressure_viscosity=2.1e-8, source="ISO 3448 grade; typical VI 95 mineral oil"),

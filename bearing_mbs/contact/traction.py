@@ -46,6 +46,12 @@ rolling or sliding, since :math:`(1/2 - w)\Delta u + (1 - w) r_b \Delta\omega = 
 (tests/test_kernel.py checks it): the inlet's viscous loss, never a source. A moment against the relative spin
 alone would have the right power in pure rolling only, and would pull a stalled roller towards the ring's spin.
 
+Shear heating (optional, ``shear_heating``; ``eyring`` only): the viscous stress is reduced by the Couette film's
+Nahme reduction at :math:`Na = (\beta/k)\,\tau_v|\Delta u|h`, the heat the film would make isothermally
+(:mod:`.shear_heating`): walls at the oil's temperature, no flash temperature, the elastic branch and the limiting
+stress untouched. Starvation: the row's replenishment factor φ_rs multiplies the film (central and minimum, so Λ as
+well) and the rolling force, as the inlet heating's φ_T does (1: fully flooded).
+
 The film thickness in the shear rate is floored at the roughness σ: below it the asperities carry the load
 (ψ → 1) and the film-shear term would otherwise stiffen without bound as the film vanishes.
 

@@ -10,7 +10,8 @@ group less what the inner ring's interference fit and the rings' temperature dif
   radial displacement :math:`2 p d^2 F/(2 E (F^2 - d^2))`) grows at its raceway by :math:`I\,d/F`
   (:func:`fit_reduction`; the outer ring, stationary in a housing with a loose or transition fit, is taken
   unchanged).
-* **Temperature**: an inner ring ΔT warmer than the outer (5–10 K in running gearboxes) grows against it by
+* **Temperature**: an inner ring ΔT warmer than the outer (5–10 K in running machines, as SKF's catalogue says in
+  choosing an internal clearance) grows against it by
   :math:`\alpha\,\Delta T\,D_{pw}` (:func:`thermal_reduction`: the raceways and rollers taken at the pitch
   diameter, the rollers at the mean of the rings' temperatures; α = 12e-6 1/K, the through-hardened bearing steel's
   value bearing catalogues give).

@@ -34,6 +34,10 @@ where the film carries N. N is the land's normal force,
 the magnitude of the cage's weight plus, with pocket contacts, :math:`-\sum_j P_j e_{\theta,j}` (the constraint
 cage holds each roller's orbital angle about the axis, so its pockets put a torque on the cage and no force).
 
+A constraint cage with oiled pockets adds each roller's pocket films (:func:`pocket_film_coefficients`): with the
+roller centred, a moment :math:`m_p(\omega_j - \omega_c)` on its spin and a torque :math:`t_p(\omega_j -
+\omega_c)` on the cage, averaged over the orbit like the pocket forces.
+
 Left out: the weight of the rollers (its tangential parts cancel around the orbit), the cage's eccentricity and
 the inner ring's vibration. Harris (1966) also held each roller at its balance everywhere; here the spin's
 inertia outside the load zone is kept, as the dynamic engines keep it.
@@ -50,9 +54,9 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from bearing_mbs.contact import kernel
+from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.core.scene import OrbitConstraint, Scene
 from bearing_mbs.elements import Drag
-from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.elements.contact_pairs import PairArrays, add_forces_twin, pack
 from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalFilm
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
