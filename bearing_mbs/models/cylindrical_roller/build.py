@@ -117,14 +117,14 @@ def build_bearing_scene(spec: Spec) -> Scene:
         elif spec.cage.model == "constraint":
             psi = geometry.roller_angles[k]
             constraints.append(OrbitConstraint(f"roller{k}-pocket", CAGE, roller, (math.cos(psi), math.sin(psi))))
-        if caged and film_law:
-            for label, (point, normal) in geometry.pocket_walls(k).items():
-                add("pocket_film", ContactPair(f"roller{k}-pocket_{label}-film", "circle_line", CAGE, roller,
-                                               film_law, radius_b=r_w, anchor=point, direction=normal))
         else:
             neighbour = first_roller + (k + 1) % geometry.rollers
             add("roller", ContactPair(f"roller{k}-roller{(k + 1) % geometry.rollers}", "circle_circle", roller,
                                      neighbour, laws["roller"], radius_b=r_w, radius_a=r_w))
+        if caged and film_law:
+            for label, (point, normal) in geometry.pocket_walls(k).items():
+                add("pocket_film", ContactPair(f"roller{k}-pocket_{label}-film", "circle_line", CAGE, roller,
+                                               film_law, radius_b=r_w, anchor=point, direction=normal))
     if caged and spec.bearing.cage_guidance == "inner_land":
         add("land", ContactPair("cage-inner_land", "circle_in_circle", CAGE, INNER_RING, laws["land"],
                                  radius_b=geometry.inner_land_radius, radius_a=geometry.cage_bore_radius))
