@@ -59,6 +59,11 @@ LANDING_SLACK = 1e-9
 
 #: Largest constraint violation [× the constraints' length scale] a projection may leave.
 PROJECTION_ACCEPTANCE = 1e-10
+#: Step attempts a call of :func:`integrate` makes with a method that sets its own step (adaptive, generalized-α)
+#: before it returns mid-interval, so that the engine's loop sees a stop request (Ctrl-C, SIGTERM) and reports
+#: progress even where the step has collapsed: a Newton iteration that converges only at a tiny fraction of the
+#: nominal step takes that tiny step, doubles back and fails again, and one output interval could take hours.
+ATTEMPTS_PER_CALL = 2000
 
 
 @numba.njit(cache=True, inline="always")
@@ -90,7 +95,8 @@ def record_output(packed, index, t, state, workspace, output):
 def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages, implicit, workspace, output, t,
               t_stop, h_adaptive, output_index):
     """Advance ``state`` from t to t_stop (an output instant) with the method of code ``method``, writing the
-    output instants from ``output_index`` on.
+    output instants from ``output_index`` on; a method that sets its own step returns after
+    :data:`ATTEMPTS_PER_CALL` step attempts, mid-interval, and resumes where it left off.
 
     ``adaptive``: the method controls its step. ``verlet`` and ``implicit`` carry velocity Verlet's and
     generalized-α's last acceleration and power between calls, so chunks and output instants do not change
@@ -115,11 +121,16 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
     has_constraints = packed.constraints.kind.size > 0
     scale = length_scale(packed.constraints, q) if has_constraints else 1.0
 
+    attempts, paused = 0, False
     while output_index < output.times.size and output.times[output_index] <= t_stop * (1 + 1e-15):
         t_target = output.times[output_index]
         steps_left, nominal = 0, 0.0  # fixed-step methods split each output interval into equal steps
         while t < t_target:
             if stepping:
+                attempts += 1
+                if attempts > ATTEMPTS_PER_CALL:  # return mid-interval; the next call resumes at t, h_adaptive
+                    paused = True
+                    break
                 # land on the output instant, also when rounding left it a hair beyond one step
                 landing = t_target - t <= h_adaptive * (1.0 + LANDING_SLACK)
                 h = t_target - t if landing else h_adaptive
@@ -213,7 +224,7 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                 if method == RUNGE_KUTTA and ready:
                     reuse_last_stage(stages)
 
-        if status != RUNNING:
+        if status != RUNNING or paused:
             break
         record_output(packed, output_index, t, state, workspace, output)
         output_index += 1
