@@ -272,9 +272,8 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
     modulus = effective_modulus(first.youngs_modulus, first.poisson_ratio, other.youngs_modulus, other.poisson_ratio)
     row = ()
     if contact.friction_law == "ehl":  # the spec admits it on the raceways only
-        raceway = geometry.inner_race_diameter if group == "inner_race" else geometry.outer_race_diameter
-        radius = reduced_radius(raceway / 2, geometry.roller_diameter / 2, group == "outer_race")
-        row = traction_row(contact, spec.lubricant, 2 * modulus, radius, length, starvation(spec, geometry))
+        row = traction_row(contact, spec.lubricant, *raceway_line_contact(spec, geometry, group),
+                           starvation(spec, geometry))
     if contact.stiffness_model == "given":
         return pair_law(contact, traction=row)
     if contact.stiffness_model == "document":
@@ -284,6 +283,18 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
         return pair_law(contact, stiffness=DOCUMENT_STIFFNESS[group], exponent=DOCUMENT_EXPONENT, traction=row)
     stiffness = palmgren_stiffness(length) * modulus / STEEL_EFFECTIVE_MODULUS
     return pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT, traction=row)
+
+
+def raceway_line_contact(spec: Spec, geometry: BearingGeometry, group: str) -> tuple[float, float, float]:
+    """(E' [Pa], R [m], l [m]) of a raceway group's line contact ('inner_race' or 'outer_race'): twice the roller's
+    and ring's effective modulus (:func:`~bearing_mbs.contact.line_contact.effective_modulus`), the reduced radius
+    in the rolling direction (:func:`~bearing_mbs.contact.ehl.reduced_radius`, concave on the outer raceway) and the
+    roller's effective length."""
+    roller, ring = spec.bearing.roller_material, spec.bearing.ring_material
+    modulus = effective_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus, ring.poisson_ratio)
+    raceway = geometry.inner_race_diameter if group == "inner_race" else geometry.outer_race_diameter
+    radius = reduced_radius(raceway / 2, geometry.roller_diameter / 2, group == "outer_race")
+    return 2 * modulus, float(radius), geometry.roller_length
 
 
 def traction_row(contact, lubricant, reduced_modulus: float, radius: float, length: float,

@@ -53,10 +53,10 @@ import numpy as np
 
 from bearing_mbs.analysis import energy_balance_error
 from bearing_mbs.contact import kernel
-from bearing_mbs.contact.ehl import hertz_half_width, reduced_radius
-from bearing_mbs.contact.line_contact import effective_modulus
+from bearing_mbs.contact.ehl import hertz_half_width
 from bearing_mbs.contact.traction import TRACTION_COLUMNS
 from bearing_mbs.elements.contact_pairs import pack
+from bearing_mbs.models.cylindrical_roller.build import raceway_line_contact
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 
 #: Percentile of the per-instant largest roller load that ``max_roller_load`` reports [%].
@@ -89,20 +89,13 @@ class LineContact(NamedTuple):
 
 def raceway_contact(spec, scene, group: str) -> LineContact:
     """E', R and l of the raceway ``group`` ('inner_race' or 'outer_race'): the lubricated pair's traction row
-    carries them; for another law they are derived as the builder derives that row, E' from the roller's and the
-    ring's materials (:func:`~bearing_mbs.contact.line_contact.effective_modulus`, times 2), R from the pair's
-    raceway and roller radii (:func:`~bearing_mbs.contact.ehl.reduced_radius`, concave for the outer raceway), l the
-    roller's effective length."""
+    carries them; for another law, the builder's :func:`~bearing_mbs.models.cylindrical_roller.build.
+    raceway_line_contact`, which makes that row."""
     pair = scene.pairs[int(pair_columns(scene, group)[0])]
     if pair.law.traction:
         row = dict(zip(TRACTION_COLUMNS, pair.law.traction))
         return LineContact(row["modulus"], row["radius"], row["length"])
-    bearing = spec.bearing
-    roller, ring = bearing.roller_material, bearing.ring_material
-    modulus = 2 * effective_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus,
-                                    ring.poisson_ratio)
-    radius = reduced_radius(pair.radius_a, pair.radius_b, pair.kind == "circle_in_circle")
-    return LineContact(float(modulus), float(radius), BearingGeometry.from_spec(bearing).roller_length)
+    return LineContact(*raceway_line_contact(spec, BearingGeometry.from_spec(spec.bearing), group))
 
 
 def frictional_power_intensity(traction, sliding, load, contact: LineContact) -> np.ndarray:
