@@ -63,11 +63,11 @@ def test_each_scene_builds_only_what_it_needs(overrides, counts):
 
 
 def test_the_lubricated_default_builds_its_film_and_churning():
-    """The scenario's default variant, lubricated: constraint cage (2Z raceway pairs, Z joints) on its land (one
-    contact pair for the land's rim and the oil film on it, one journal bearing), the churning of each roller and
-    of the cage (Z + 1 drags)."""
+    """The scenario's default variant, lubricated: constraint cage (2Z raceway pairs, Z joints, 2Z oiled pocket
+    walls) on its land (one contact pair for the land's rim and the oil film on it, one journal bearing), the
+    churning of each roller and of the cage (Z + 1 drags)."""
     scene = build_scene(load_spec(STEADY))
-    assert scene_counts(scene) == {"bodies": Z + 2, "pairs": 2 * Z + 1, "constraints": Z, "loads": 2, "drives": 1,
+    assert scene_counts(scene) == {"bodies": Z + 2, "pairs": 4 * Z + 1, "constraints": Z, "loads": 2, "drives": 1,
                                    "drags": Z + 1, "sensors": 4, "slewing_bearings": 0, "journal_bearings": 1,
                                    "unbalances": 0}
 

@@ -21,7 +21,11 @@ from bearing_mbs.runner import summarize
 
 from cases import SCENARIOS
 
-SHORT = ["scenario.end_time=0.01", "analysis.start=0.005", "solver.output_interval=1e-4"]
+#: At the document's zero clearance: at the operating clearance the load, applied at once, drops the ring through it
+#: onto its rollers, and the impacts amplify differences within Newton's tolerance far above it (6e-6 of the ring's
+#: travel between the two Jacobians; tests/test_skidding_second_pass.py compares the engines under a load ramp).
+SHORT = ["scenario.end_time=0.01", "analysis.start=0.005", "solver.output_interval=1e-4",
+         "bearing.diametral_clearance=0"]
 SETTINGS = {
     "exudyn_analytic": ["solver.engine=exudyn", "solver.exudyn.step=1e-5", "solver.exudyn.jacobian=analytic"],
     "exudyn_numerical": ["solver.engine=exudyn", "solver.exudyn.step=1e-5", "solver.exudyn.jacobian=numerical"],

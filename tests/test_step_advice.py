@@ -34,9 +34,9 @@ def _run(tmp_path, name, *overrides):
 
 
 def test_every_message_quotes_one_advice_and_following_it_passes_the_step_check(tmp_path):
-    # diverges: its message quotes the advice
+    # diverges (blows up, or a roller runs through its raceway first): its message quotes the advice
     code, summary, result = _run(tmp_path, "diverged", "--set", "solver.reference.step=1e-4")
-    assert code == 1 and result.failure == Failure.BLOWUP
+    assert code == 1 and result.failure in (Failure.BLOWUP, Failure.PENETRATION)
     spec = load_spec(STEADY, ["solver.engine=reference", "solver.reference.step=1e-4"])
     advice = step_advice(build_scene(spec), spec.solver)
     limit = advise(build_scene(spec)).limit("reference", "rk4")
