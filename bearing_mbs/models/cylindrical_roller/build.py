@@ -167,11 +167,17 @@ def build_bearing_scene(spec: Spec) -> Scene:
     return scene
 
 
+def drag_reference_rpm(spec: Spec) -> float:
+    """The speed [rpm] at which the lubricant's speed-dependent terms are taken (``[lubricant] reference_rpm``,
+    default the drive's highest speed): the drags' coefficients and the starvation factor."""
+    return spec.lubricant.reference_rpm or highest_speed_rpm(spec.drive)
+
+
 def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
     """The drag coefficients on each roller from ``[lubricant]`` (linear [N s/m], quadratic [N s²/m²], angular
     [N m s/rad]; empty without drag)."""
     lubricant = spec.lubricant
-    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec.drive)
+    reference_rpm = drag_reference_rpm(spec)
     if lubricant.model == "none" or not reference_rpm:
         return {}
     inner_speed = reference_rpm * RPM
@@ -203,10 +209,10 @@ def roller_drag(spec: Spec, geometry: BearingGeometry) -> dict[str, float]:
 
 def starvation(spec: Spec, geometry: BearingGeometry) -> float:
     """The raceway contacts' replenishment factor φ_rs (:func:`.lubrication.replenishment_factor`) at the oil's
-    viscosity and the drag's reference speed; 1 (fully flooded) without ``[lubricant] starvation`` or at rest. The
+    viscosity and the drags' reference speed (:func:`drag_reference_rpm`); 1 (fully flooded) without ``[lubricant] starvation`` or at rest. The
     outside diameter is d_o + (d_i − d): an outer ring as thick as the inner one."""
     lubricant = spec.lubricant
-    reference_rpm = lubricant.reference_rpm or highest_speed_rpm(spec.drive)
+    reference_rpm = drag_reference_rpm(spec)
     if not lubricant.starvation or not reference_rpm:
         return 1.0
     bore = spec.bearing.inner_ring_bore
