@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from bearing_mbs.spec import methods
 from bearing_mbs.spec.fields import SpecError, in_range, one_of, positive, require
-from bearing_mbs.spec.solver import CONNECTORS, ENGINES, EXUDYN_METHODS, REFERENCE_METHODS
+from bearing_mbs.spec.solver import CONNECTORS, ENGINES
 
 #: Error norms (docs/numerics.md): positions for every model; the bearing's skidding quantities.
 NORMS = ("positions", "cage_speed", "roller_loads", "slips")
@@ -28,8 +29,7 @@ class RunSettings:
 
     def __post_init__(self):
         one_of("engine", self.engine, ENGINES)
-        methods = REFERENCE_METHODS if self.engine == "reference" else tuple(EXUDYN_METHODS)
-        one_of("method", self.method, methods)
+        one_of("method", self.method, methods.names(self.engine))
         one_of("connector", self.connector, CONNECTORS)
         for name in ("steps", "tolerances"):
             for i, value in enumerate(getattr(self, name)):

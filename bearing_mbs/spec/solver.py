@@ -6,39 +6,29 @@ from __future__ import annotations
 import warnings
 from dataclasses import dataclass, field
 
+from bearing_mbs.spec import methods
 from bearing_mbs.spec.fields import SpecError, in_range, one_of, positive
 
-#: Reference-engine integrators (``bearing_mbs.engines.reference``).
-REFERENCE_METHODS = ("central_difference", "velocity_verlet", "rk4", "dopri5", "generalized_alpha",
-                     "generalized_alpha_adaptive")
+#: Reference-engine integrators (``bearing_mbs.engines.reference``), from the catalogue
+#: (:mod:`bearing_mbs.spec.methods`).
+REFERENCE_METHODS = methods.names(methods.REFERENCE)
 #: Of those, the ones that adapt their step to ``tolerance``.
-REFERENCE_ADAPTIVE = ("dopri5", "generalized_alpha_adaptive")
+REFERENCE_ADAPTIVE = tuple(m.name for m in methods.ENGINE_METHODS[methods.REFERENCE] if m.adaptive)
 #: Of those, the implicit ones (Newton's method on the force elements' Jacobian).
-REFERENCE_IMPLICIT = ("generalized_alpha", "generalized_alpha_adaptive")
+REFERENCE_IMPLICIT = tuple(m.name for m in methods.ENGINE_METHODS[methods.REFERENCE] if m.implicit)
 
 #: Exudyn 1.13.6 ``DynamicSolverType`` members, by our snake-case name: those its ``SolveDynamic`` runs (it has a
 #: ``DVERK6`` member too, but raises NotImplementedFeatureError for it, so ``dverk6`` is refused here).
-EXUDYN_METHODS = {
-    "generalized_alpha": "GeneralizedAlpha",
-    "trapezoidal_index2": "TrapezoidalIndex2",
-    "explicit_euler": "ExplicitEuler",
-    "explicit_midpoint": "ExplicitMidpoint",
-    "rk33": "RK33",
-    "rk4": "RK44",
-    "rk67": "RK67",
-    "velocity_verlet": "VelocityVerlet",
-    "ode23": "ODE23",
-    "dopri5": "DOPRI5",
-}
+EXUDYN_METHODS = {m.name: m.exudyn for m in methods.ENGINE_METHODS[methods.EXUDYN]}
 #: Names a method had before it got the name both engines use: old → new (accepted, with a warning).
-RENAMED_METHODS = {"rk44": "rk4"}
-EXUDYN_IMPLICIT = ("generalized_alpha", "trapezoidal_index2")
-EXUDYN_ADAPTIVE = ("ode23", "dopri5")
+RENAMED_METHODS = {old: method.name for old, method in methods.RENAMED.items()}
+EXUDYN_IMPLICIT = tuple(m.name for m in methods.ENGINE_METHODS[methods.EXUDYN] if m.implicit)
+EXUDYN_ADAPTIVE = tuple(m.name for m in methods.ENGINE_METHODS[methods.EXUDYN] if m.adaptive)
 CONNECTORS = ("compiled", "python", "native")
 #: How Exudyn's implicit solvers get the force elements' Jacobian: the elements' own (``analytic``) or Exudyn's
 #: finite differences of the force user function (``numerical``, 2n evaluations per Jacobian).
 JACOBIANS = ("analytic", "numerical")
-ENGINES = ("reference", "exudyn")
+ENGINES = (methods.REFERENCE, methods.EXUDYN)
 
 
 @dataclass(frozen=True)
@@ -52,7 +42,7 @@ class ReferenceSolver:
     spectral_radius: generalized-α's ρ∞ in [0, 1].
     """
 
-    method: str = "rk4"
+    method: str = methods.RK4.name
     step: float = 1e-6
     contact_step: float | None = None
     tolerance: float = 1e-8
@@ -64,17 +54,22 @@ class ReferenceSolver:
         in_range("tolerance", self.tolerance, 0.0, 1.0, "-", low_open=True, high_open=True)
         in_range("spectral_radius", self.spectral_radius, 0.0, 1.0, "-")
         if self.contact_step is not None:
-            if self.method != "central_difference":
+            if self.method != methods.CENTRAL_DIFFERENCE.name:
                 raise SpecError("contact_step", self.contact_step, "only the central_difference method uses it")
             in_range("contact_step", self.contact_step, 0.0, self.step, "s", low_open=True)
 
     @property
+    def entry(self) -> methods.Method:
+        """The method's entry in the catalogue."""
+        return methods.method_named(self.method)
+
+    @property
     def adaptive(self) -> bool:
-        return self.method in REFERENCE_ADAPTIVE
+        return self.entry.adaptive
 
     @property
     def implicit(self) -> bool:
-        return self.method in REFERENCE_IMPLICIT
+        return self.entry.implicit
 
 
 @dataclass(frozen=True)
@@ -92,7 +87,7 @@ class ExudynSolver:
     scene to have one (the built-in kinds do) and falls back to ``numerical`` for a kind registered from outside.
     """
 
-    method: str = "generalized_alpha"
+    method: str = methods.GENERALIZED_ALPHA.name
     step: float = 1e-5
     tolerance: float = 1e-8
     connector: str = "compiled"
@@ -114,12 +109,17 @@ class ExudynSolver:
         one_of("jacobian", self.jacobian, JACOBIANS)
 
     @property
+    def entry(self) -> methods.Method:
+        """The method's entry in the catalogue."""
+        return methods.method_named(self.method)
+
+    @property
     def adaptive(self) -> bool:
-        return self.method in EXUDYN_ADAPTIVE
+        return self.entry.adaptive
 
     @property
     def implicit(self) -> bool:
-        return self.method in EXUDYN_IMPLICIT
+        return self.entry.implicit
 
 
 @dataclass(frozen=True)
