@@ -20,6 +20,7 @@ import numpy as np
 
 from bearing_mbs.engines.reference.block_elimination import BlockSystem
 from bearing_mbs.engines.reference.codes import COUNTERS
+from bearing_mbs.engines.reference.step_control import StepController
 from bearing_mbs.engines.reference.tableaus import ButcherTableau
 
 
@@ -39,7 +40,8 @@ class Controls(NamedTuple):
     difference's step while a pair penetrates (0: none). tolerance: relative and absolute tolerance of the
     adaptive step and the Newton tolerance of generalized-α. speed_limit [m/s] and penetration_bound (per pair) [m]:
     the run guards. spectral_radius: generalized-α's ρ∞. analytic_jacobian: every force element of the scene has
-    an analytic Jacobian (else generalized-α differentiates numerically)."""
+    an analytic Jacobian (else generalized-α differentiates numerically). step_controller: an adaptive method's
+    (:mod:`~bearing_mbs.engines.reference.step_control`)."""
 
     step: float
     contact_step: float
@@ -48,6 +50,7 @@ class Controls(NamedTuple):
     penetration_bound: np.ndarray
     spectral_radius: float
     analytic_jacobian: bool
+    step_controller: StepController
 
 
 class RungeKuttaTableau(NamedTuple):

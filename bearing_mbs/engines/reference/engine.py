@@ -42,6 +42,7 @@ from bearing_mbs.engines.reference.codes import (
 )
 from bearing_mbs.engines.reference.dynamics import accelerations
 from bearing_mbs.engines.reference.integrators import integrate
+from bearing_mbs.engines.reference.step_control import step_controller
 from bearing_mbs.engines.reference.tableaus import TABLEAUS
 from bearing_mbs.spec.solver import SolverSpec
 
@@ -92,7 +93,8 @@ def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progre
     method = METHOD_CODES[settings.method]
     tableau = runge_kutta_tableau(TABLEAUS.get(settings.method))
     controls = Controls(float(settings.step), float(settings.contact_step or 0.0), float(settings.tolerance),
-                        float(solver.speed_limit), bounds, float(settings.spectral_radius), has_analytic_jacobian(scene))
+                        float(solver.speed_limit), bounds, float(settings.spectral_radius), has_analytic_jacobian(scene),
+                        step_controller(settings.entry))
     # each kind of method gets its own carries, the other kind's are None (see integrate)
     if method == GENERALIZED_ALPHA:
         implicit, verlet, stages = new_implicit_carry(n, newton_system(scene)), None, None

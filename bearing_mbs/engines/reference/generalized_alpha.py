@@ -44,10 +44,12 @@ Newton stalls; the iteration stops when every coordinate's increment of position
 **Error and step control** (``generalized_alpha_adaptive``). The local error of the positions is estimated as
 :math:`e = (\beta - \tfrac16) h^2 (a_{n+1} - a_n)` (Zienkiewicz & Xie 1991, the Newmark family's leading term
 :math:`(\beta - \tfrac16) h^3 \dddot q`); its RMS norm, each coordinate scaled by tolerance·(1 + max(|q_n|,
-|q_{n+1}|)), must be ≤ 1, and the next step is :math:`h \min(2, \max(0.2, 0.9\,\mathrm{err}^{-1/3}))`, capped by
-``step``. A step whose Newton iteration fails is retried at half of it, in both forms; the fixed-step form
-then doubles its step back to the nominal one, as Exudyn's does. J is reused from step to step while Newton
-converges fast and the step stays within :data:`REUSE_RATIO` of the one it was formed for. The work is integrated
+|q_{n+1}|)), must be ≤ 1, and the step-size controller (:mod:`~bearing_mbs.engines.reference.step_control`, with
+the method's settings from the catalogue: an error of order 2, growth at most 2×) proposes the next step, capped by
+``step``. A step whose Newton iteration fails is retried at :data:`NEWTON_RETRY` of it, in both forms; the
+fixed-step form then grows its step by :data:`RECOVERY` per step back to the nominal one, as Exudyn's does. J is
+reused from step to step while Newton converges fast and the step stays within :data:`REUSE_RATIO` of the one it
+was formed for. The work is integrated
 with the trapezoid rule over the step's end powers.
 """
 
@@ -77,6 +79,7 @@ from bearing_mbs.engines.reference.dynamics import (
     UNCONSTRAINED,
     accelerations,
 )
+from bearing_mbs.engines.reference.step_control import control_step, underflows
 
 #: Newton stops when every increment is below this fraction of its coordinate's tolerance scale.
 NEWTON_FRACTION = 0.1
@@ -88,6 +91,10 @@ CONTRACTIVITY = 0.9
 REUSE_RATIO = 1.4
 #: The relative perturbation of the forward differences (elements without an analytic Jacobian).
 DIFFERENCE_STEP = 1e-7
+#: A step whose Newton iteration fails is retried at this fraction of it [-].
+NEWTON_RETRY = 0.5
+#: After a retry, the fixed-step form grows its step by this factor per accepted step, up to the nominal one [-].
+RECOVERY = 2.0
 
 
 @numba.njit(cache=True)
@@ -190,8 +197,8 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
 
     Returns (status, accepted, h_adaptive, work_supplied, work_dissipated). An accepted step leaves the new
     state's acceleration, auxiliary acceleration and power in ``carry``; a rejected one leaves ``carry`` as it
-    was, with a smaller ``h_adaptive`` (``STEP_UNDERFLOW`` below 1e-14 of t). ``error_control``: accept by the
-    error estimate and propose the next step from it (else by Newton's convergence alone).
+    was, with a smaller ``h_adaptive`` (``STEP_UNDERFLOW`` when that is too short to advance t). ``error_control``:
+    accept by the error estimate and propose the next step from it (else by Newton's convergence alone).
     """
     q, v, latched = state.q, state.v, state.latched
     q_new, v_new, f = workspace.q_new, workspace.v_new, workspace.acceleration
@@ -257,26 +264,22 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
         form = True
     # the state of the converged a, its last increment included
     _state_of(a, workspace.stage_q, workspace.stage_v, slope_q, slope_v, q_new, v_new)
-    if not converged:  # retry at half the step
+    if not converged:  # retry at a shorter step
         counters[REJECTED] += 1
-        h_adaptive = 0.5 * h
-        return (STEP_UNDERFLOW if h_adaptive < 1e-14 * max(1.0, abs(t)) else RUNNING), False, h_adaptive, 0.0, 0.0
+        h_adaptive = NEWTON_RETRY * h
+        return (STEP_UNDERFLOW if underflows(h_adaptive, t) else RUNNING), False, h_adaptive, 0.0, 0.0
     if not error_control:  # back towards the nominal step after a retry
-        h_adaptive = min(2.0 * h_adaptive, controls.step)
+        h_adaptive = min(RECOVERY * h_adaptive, controls.step)
     else:
         total = 0.0
         for i in range(n):
             error = abs(beta - 1.0 / 6.0) * h * h * (a[i] - a_old[i])
             total += (error / (tolerance * (1.0 + max(abs(q[i]), abs(q_new[i]))))) ** 2
-        error = math.sqrt(total / n)
-        factor = min(2.0, max(0.2, 0.9 * error ** (-1.0 / 3.0))) if error > 0 else 2.0
-        if not error <= 1.0:
+        accepted, underflow, h_adaptive = control_step(controls.step_controller, math.sqrt(total / n), t, h, landing,
+                                                       h_adaptive, controls.step)
+        if not accepted:
             counters[REJECTED] += 1
-            h_adaptive = h * factor if math.isfinite(error) else 0.2 * h
-            return (STEP_UNDERFLOW if h_adaptive < 1e-14 * max(1.0, abs(t)) else RUNNING), False, h_adaptive, 0.0, \
-                0.0
-        proposal = max(h * factor, h_adaptive) if landing else h * factor
-        h_adaptive = min(proposal, controls.step)
+            return (STEP_UNDERFLOW if underflow else RUNNING), False, h_adaptive, 0.0, 0.0
     work_supplied = 0.5 * h * (power[0] + supplied)
     work_dissipated = 0.5 * h * (power[1] + dissipated)
     for i in range(n):

@@ -3,9 +3,9 @@ r"""Explicit Runge–Kutta on (q, v) with a Butcher tableau (:mod:`bearing_mbs.e
 Stages :math:`k_i = F\bigl(t + c_i h,\; y + h\sum_{j<i} a_{ij} k_j\bigr)` with :math:`y = (q, v)` and
 :math:`F = (v, a)`; the step :math:`y_{n+1} = y_n + h\sum_i b_i k_i`. ``rk4`` takes the fixed step;
 ``dopri5`` adapts it with the embedded estimate :math:`h\sum_i (b_i - \hat b_i) k_i`: its RMS norm over (q, v),
-each component scaled by tolerance·(1 + max(|y_n|, |y_{n+1}|)), must be ≤ 1, and the next step is
-:math:`h \min(5, \max(0.2, 0.9\,\mathrm{err}^{-1/(p+1)}))` (p: the order of the estimate), capped by
-``step``. The work is integrated with the weights b over the stages' power,
+each component scaled by tolerance·(1 + max(|y_n|, |y_{n+1}|)), must be ≤ 1, and the step-size controller
+(:mod:`~bearing_mbs.engines.reference.step_control`, with the method's settings from the catalogue) proposes the
+next step, capped by ``step``. The work is integrated with the weights b over the stages' power,
 :math:`W \mathrel{+}= h\sum_i b_i P_i`.
 """
 
@@ -18,6 +18,7 @@ import numba
 from bearing_mbs.engines.reference.codes import EVALUATIONS, REJECTED, RUNNING, STEP_UNDERFLOW
 from bearing_mbs.engines.reference.copies import copy_into
 from bearing_mbs.engines.reference.dynamics import CONSTRAINED, PARTIAL, accelerations
+from bearing_mbs.engines.reference.step_control import control_step
 
 
 @numba.njit(cache=True)
@@ -76,21 +77,17 @@ def runge_kutta_acceptance(tableau, controls, t, h, landing, h_adaptive, q, v, q
     [s]: the current adaptive step.
 
     Returns (status, accepted, h_adaptive, work_supplied, work_dissipated): a rejected step (error norm > 1
-    or not finite) gives a smaller ``h_adaptive`` to retry with, or ``STEP_UNDERFLOW`` below 1e-14 of t.
-    An accepted step proposes the next ``h_adaptive`` (kept at least as long as before when it only
-    shortened to land) and returns its (supplied, dissipated) work [J]. Fixed-step tableaus always accept.
+    or not finite) gives a smaller ``h_adaptive`` to retry with, or ``STEP_UNDERFLOW`` when that is too short.
+    An accepted step proposes the next ``h_adaptive`` (:func:`~bearing_mbs.engines.reference.step_control.control_step`)
+    and returns its (supplied, dissipated) work [J]. Fixed-step tableaus always accept.
     """
     if tableau.b_error.size > 0:
         error = error_norm(tableau, h, q, v, q_new, v_new, stages, controls.tolerance)
-        factor = min(5.0, max(0.2, 0.9 * error ** (-1.0 / (tableau.error_order + 1)))) if error > 0 else 5.0
-        if not error <= 1.0:  # also rejects a NaN error
+        accepted, underflow, h_adaptive = control_step(controls.step_controller, error, t, h, landing, h_adaptive,
+                                                       controls.step)
+        if not accepted:
             counters[REJECTED] += 1
-            h_adaptive = h * factor if math.isfinite(error) else 0.2 * h
-            if h_adaptive < 1e-14 * max(1.0, abs(t)):
-                return STEP_UNDERFLOW, False, h_adaptive, 0.0, 0.0
-            return RUNNING, False, h_adaptive, 0.0, 0.0
-        proposal = max(h * factor, h_adaptive) if landing else h * factor
-        h_adaptive = min(proposal, controls.step)
+            return (STEP_UNDERFLOW if underflow else RUNNING), False, h_adaptive, 0.0, 0.0
     work_supplied = work_dissipated = 0.0
     for i in range(tableau.b.size):
         work_supplied += h * tableau.b[i] * stages.power[i, 0]
