@@ -82,9 +82,9 @@ def _stability(args) -> int:
 
 def _solver_pairs(text: str) -> tuple[tuple[str, str], ...]:
     """``--solvers`` as (engine, method) pairs, each an engine and one of its methods."""
-    from bearing_mbs.spec.solver import EXUDYN_METHODS, REFERENCE_METHODS
+    from bearing_mbs.spec import methods as catalogue
 
-    known = {"reference": tuple(REFERENCE_METHODS), "exudyn": tuple(EXUDYN_METHODS)}
+    known = {engine: catalogue.names(engine) for engine in catalogue.ENGINE_METHODS}
     pairs = []
     for item in names(text):
         engine, _, method = item.partition("/")

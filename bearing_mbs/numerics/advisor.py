@@ -20,16 +20,19 @@ from bearing_mbs.core.scene import Scene
 from bearing_mbs.models.registry import MODELS
 from bearing_mbs.numerics.advice_report import advice_report
 from bearing_mbs.numerics.stability_regions import IMPLICIT, RK_TABLEAUS, SECOND_ORDER, UNKNOWN, mode_limit
+from bearing_mbs.spec import methods
+from bearing_mbs.spec.methods import EXUDYN, REFERENCE
 
 #: Recommended step = SAFETY × the estimated stability limit [-].
 SAFETY = 0.5
 
 #: The "engine/method" keys the advice lists.
 ADVISED_METHODS = (
-    "reference/central_difference", "reference/velocity_verlet", "reference/rk4", "reference/dopri5",
-    "exudyn/rk4", "exudyn/rk33", "exudyn/rk67", "exudyn/ode23", "exudyn/dopri5", "exudyn/explicit_midpoint",
-    "exudyn/explicit_euler", "exudyn/velocity_verlet", "exudyn/dverk6", "exudyn/generalized_alpha",
-    "exudyn/trapezoidal_index2",
+    *(method.key(REFERENCE) for method in (methods.CENTRAL_DIFFERENCE, methods.VELOCITY_VERLET, methods.RK4,
+                                           methods.DOPRI5)),
+    *(method.key(EXUDYN) for method in (methods.RK4, methods.RK33, methods.RK67, methods.ODE23, methods.DOPRI5,
+                                        methods.EXPLICIT_MIDPOINT, methods.EXPLICIT_EULER, methods.VELOCITY_VERLET,
+                                        methods.DVERK6, methods.GENERALIZED_ALPHA, methods.TRAPEZOIDAL_INDEX2)),
 )
 
 
@@ -54,7 +57,7 @@ class Advice:
 
     def limit_and_mode(self, engine: str, method: str) -> tuple[float | None, str]:
         """(limit [s], the mode that sets it)."""
-        key = f"{engine}/{method}"
+        key = methods.key(engine, method)
         if not self.applies or key in UNKNOWN or (key not in RK_TABLEAUS and key not in SECOND_ORDER
                                                   and key not in IMPLICIT):
             return None, ""
@@ -161,7 +164,7 @@ def _fixed_step(solver) -> float:
     """The step [s] a fixed-step run takes while its contacts are closed: central difference's contact step if it
     has one (always closed in a bearing), else its step."""
     settings = solver.active
-    if solver.engine == "reference" and settings.method == "central_difference" and settings.contact_step:
+    if solver.engine == REFERENCE and settings.method == methods.CENTRAL_DIFFERENCE.name and settings.contact_step:
         return settings.contact_step
     return settings.step
 

@@ -14,15 +14,17 @@ from __future__ import annotations
 
 import math
 
+from bearing_mbs.spec import methods
+
 _SQRT5 = math.sqrt(5.0)
 
 #: Exudyn method name → (rows of A, b).
 EXUDYN_TABLEAUS: dict[str, tuple[tuple[tuple[float, ...], ...], tuple[float, ...]]] = {
-    "explicit_euler": (((),), (1.0,)),
-    "explicit_midpoint": (((), (0.5,)), (0.0, 1.0)),
-    "rk33": (((), (1 / 3,), (0.0, 2 / 3)), (0.25, 0.0, 0.75)),
-    "rk4": (((), (0.5,), (0.0, 0.5), (0.0, 0.0, 1.0)), (1 / 6, 1 / 3, 1 / 3, 1 / 6)),
-    "rk67": (
+    methods.EXPLICIT_EULER.name: (((),), (1.0,)),
+    methods.EXPLICIT_MIDPOINT.name: (((), (0.5,)), (0.0, 1.0)),
+    methods.RK33.name: (((), (1 / 3,), (0.0, 2 / 3)), (0.25, 0.0, 0.75)),
+    methods.RK4.name: (((), (0.5,), (0.0, 0.5), (0.0, 0.0, 1.0)), (1 / 6, 1 / 3, 1 / 3, 1 / 6)),
+    methods.RK67.name: (
         (
             (),
             (0.5 - _SQRT5 / 10,),
@@ -34,8 +36,8 @@ EXUDYN_TABLEAUS: dict[str, tuple[tuple[tuple[float, ...], ...], tuple[float, ...
         ),
         (1 / 12, 0.0, 0.0, 0.0, 5 / 12, 5 / 12, 1 / 12),
     ),
-    "ode23": (((), (0.5,), (0.0, 0.75), (2 / 9, 1 / 3, 4 / 9)), (2 / 9, 1 / 3, 4 / 9, 0.0)),
+    methods.ODE23.name: (((), (0.5,), (0.0, 0.75), (2 / 9, 1 / 3, 4 / 9)), (2 / 9, 1 / 3, 4 / 9, 0.0)),
 }
 
 #: Exudyn methods whose tableau is the reference engine's of the same name.
-SHARED_WITH_REFERENCE = ("dopri5",)
+SHARED_WITH_REFERENCE = (methods.DOPRI5.name,)

@@ -26,6 +26,8 @@ import numpy as np
 
 from bearing_mbs.engines.reference.tableaus import TABLEAUS
 from bearing_mbs.numerics.exudyn_tableaus import EXUDYN_TABLEAUS, SHARED_WITH_REFERENCE
+from bearing_mbs.spec import methods
+from bearing_mbs.spec.methods import EXUDYN, REFERENCE
 
 
 def _matrix(rows, weights) -> tuple[np.ndarray, np.ndarray]:
@@ -38,17 +40,20 @@ def _matrix(rows, weights) -> tuple[np.ndarray, np.ndarray]:
 
 #: Explicit Runge–Kutta tableaus (A, b) by "engine/method".
 RK_TABLEAUS: dict[str, tuple[np.ndarray, np.ndarray]] = {
-    **{f"exudyn/{name}": _matrix(*tableau) for name, tableau in EXUDYN_TABLEAUS.items()},
-    **{f"reference/{name}": (tableau.a, tableau.b) for name, tableau in TABLEAUS.items()},
-    **{f"exudyn/{name}": (TABLEAUS[name].a, TABLEAUS[name].b) for name in SHARED_WITH_REFERENCE},
+    **{methods.key(EXUDYN, name): _matrix(*tableau) for name, tableau in EXUDYN_TABLEAUS.items()},
+    **{methods.key(REFERENCE, name): (tableau.a, tableau.b) for name, tableau in TABLEAUS.items()},
+    **{methods.key(EXUDYN, name): (TABLEAUS[name].a, TABLEAUS[name].b) for name in SHARED_WITH_REFERENCE},
 }
+#: The reference engine's central difference and velocity Verlet.
+_CENTRAL_DIFFERENCE = methods.CENTRAL_DIFFERENCE.key(REFERENCE)
+_VELOCITY_VERLET = methods.VELOCITY_VERLET.key(REFERENCE)
 #: Second-order schemes of the reference engine, checked through their amplification matrices.
-SECOND_ORDER = ("reference/central_difference", "reference/velocity_verlet")
-#: Methods with no stability limit on the linear test equation.
-IMPLICIT = ("exudyn/generalized_alpha", "exudyn/trapezoidal_index2")
+SECOND_ORDER = (_CENTRAL_DIFFERENCE, _VELOCITY_VERLET)
+#: Methods with no stability limit on the linear test equation: Exudyn's implicit ones (the catalogue's).
+IMPLICIT = tuple(method.key(EXUDYN) for method in methods.ENGINE_METHODS[EXUDYN] if method.implicit)
 #: Methods with no formula here (Exudyn's velocity Verlet and DVERK6 are not Butcher-tableau solvers we could
 #: check).
-UNKNOWN = ("exudyn/velocity_verlet", "exudyn/dverk6")
+UNKNOWN = (methods.VELOCITY_VERLET.key(EXUDYN), methods.DVERK6.key(EXUDYN))
 
 #: Slack on |amplification| <= 1 for round-off [-].
 _TOLERANCE = 1e-9
@@ -100,9 +105,9 @@ def amplification_matrix(method: str, h, alpha: float, beta: float) -> np.ndarra
     (a stack of matrices for an array of steps ``h`` [s])."""
     h = np.asarray(h, dtype=float)
     one = np.ones_like(h)
-    if method == "reference/central_difference":  # state (q, v)
+    if method == _CENTRAL_DIFFERENCE:  # state (q, v)
         rows = [[1 + h * h * alpha, h + h * h * beta], [h * alpha, 1 + h * beta]]
-    elif method == "reference/velocity_verlet":  # state (q, v, a): a is the stored acceleration
+    elif method == _VELOCITY_VERLET:  # state (q, v, a): a is the stored acceleration
         a1 = [alpha * one, alpha * h + beta, alpha * h * h / 2 + beta * h]
         rows = [[one, h, h * h / 2], [h * a1[0] / 2, 1 + h * a1[1] / 2, h / 2 + h * a1[2] / 2], a1]
     else:

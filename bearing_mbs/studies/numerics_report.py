@@ -26,6 +26,7 @@ from pathlib import Path
 
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.spec import SpecError
+from bearing_mbs.spec.methods import CENTRAL_DIFFERENCE
 
 log = logging.getLogger(__name__)
 
@@ -37,7 +38,7 @@ def sound_slip_bound(largest_slip: float) -> float:
     """The largest slip-ratio error of a sound run [-] where the reference's largest slip ratio is
     ``largest_slip``."""
     return max(SOUND_SLIPS, SLIP_FRACTION * largest_slip)
-DOCUMENT = ("reference", "central_difference")
+DOCUMENT = ("reference", CENTRAL_DIFFERENCE.name)
 LABELS = {"cage_speed": "mean cage speed error [-]", "slips": "slip ratio error [-]",
           "roller_loads": "roller load error [-]", "positions": "position error [-]"}
 

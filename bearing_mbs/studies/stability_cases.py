@@ -7,6 +7,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from bearing_mbs.spec import Spec
+from bearing_mbs.spec import methods as m
 
 CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
 FORCE_GROUPS = ("inner_race", "outer_race", "pocket")  # the groups whose stiffness a case scales
@@ -111,16 +112,20 @@ REDUCED_CASES = ("nominal", "stiffness x100", "v_reg 1e-1", "restitution 0.1", "
 
 #: (engine, method) of the full suite, and of the reduced one.
 SOLVERS = (
-    ("reference", "central_difference"), ("reference", "velocity_verlet"), ("reference", "rk4"),
-    ("reference", "dopri5"), ("exudyn", "generalized_alpha"), ("exudyn", "rk4"), ("exudyn", "dopri5"),
+    ("reference", m.CENTRAL_DIFFERENCE.name), ("reference", m.VELOCITY_VERLET.name), ("reference", m.RK4.name),
+    ("reference", m.DOPRI5.name), ("exudyn", m.GENERALIZED_ALPHA.name), ("exudyn", m.RK4.name),
+    ("exudyn", m.DOPRI5.name),
 )
-REDUCED_SOLVERS = (("reference", "central_difference"), ("reference", "velocity_verlet"), ("reference", "rk4"),
-                   ("exudyn", "generalized_alpha"))
+REDUCED_SOLVERS = (("reference", m.CENTRAL_DIFFERENCE.name), ("reference", m.VELOCITY_VERLET.name),
+                   ("reference", m.RK4.name), ("exudyn", m.GENERALIZED_ALPHA.name))
 
-#: Convergence orders, for the energy audit's convergence check (adaptive methods: order 1 in the tolerance).
-ORDERS = {("reference", "central_difference"): 1, ("reference", "velocity_verlet"): 2, ("reference", "rk4"): 4,
-          ("exudyn", "rk4"): 4, ("exudyn", "generalized_alpha"): 2, ("exudyn", "trapezoidal_index2"): 2,
-          ("exudyn", "velocity_verlet"): 2, ("exudyn", "rk33"): 3, ("exudyn", "rk67"): 6}
+#: Convergence orders (the catalogue's), for the energy audit's convergence check (adaptive methods and the pairs
+#: not listed: order 1 in the tolerance or step).
+ORDERS = {(engine, method.name): method.order for engine, method in (
+    ("reference", m.CENTRAL_DIFFERENCE), ("reference", m.VELOCITY_VERLET), ("reference", m.RK4), ("exudyn", m.RK4),
+    ("exudyn", m.GENERALIZED_ALPHA), ("exudyn", m.TRAPEZOIDAL_INDEX2), ("exudyn", m.VELOCITY_VERLET),
+    ("exudyn", m.RK33), ("exudyn", m.RK67))}
 
-ADAPTIVE = {("reference", "dopri5"), ("exudyn", "dopri5"), ("exudyn", "ode23"), ("exudyn", "dverk6")}
-IMPLICIT = {("exudyn", "generalized_alpha"), ("exudyn", "trapezoidal_index2")}
+ADAPTIVE = {("reference", m.DOPRI5.name), ("exudyn", m.DOPRI5.name), ("exudyn", m.ODE23.name),
+            ("exudyn", m.DVERK6.name)}
+IMPLICIT = {("exudyn", m.GENERALIZED_ALPHA.name), ("exudyn", m.TRAPEZOIDAL_INDEX2.name)}

@@ -49,7 +49,7 @@ from bearing_mbs.engines.exudyn.connectors import (
     without_pairs,
 )
 from bearing_mbs.spec.fields import SpecError
-from bearing_mbs.spec.solver import EXUDYN_METHODS, SolverSpec
+from bearing_mbs.spec.solver import SolverSpec
 
 #: The share of a body's rotational inertia it keeps when an orbit constraint gives it a carrier (the carrier
 #: takes the rest).
@@ -186,8 +186,7 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     started = time.perf_counter()
     try:
         with contextlib.redirect_stdout(log):  # Exudyn prints through Python
-            solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType,
-                                                                     EXUDYN_METHODS[settings.method]))
+            solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType, settings.entry.exudyn))
     except Exception as error:  # Exudyn raises when a solver gives up
         solved = False
         if not monitor.message:

@@ -7,12 +7,15 @@ numba cannot take an enum member cheaply, so the run status inside compiled code
 from __future__ import annotations
 
 from bearing_mbs.core.failures import Failure
+from bearing_mbs.spec import methods
 
 #: Method codes: the driver dispatches on them to each method's step function.
 CENTRAL_DIFFERENCE, VELOCITY_VERLET, RUNGE_KUTTA, GENERALIZED_ALPHA = 0, 1, 2, 3
-METHOD_CODES = {"central_difference": CENTRAL_DIFFERENCE, "velocity_verlet": VELOCITY_VERLET,
-                "rk4": RUNGE_KUTTA, "dopri5": RUNGE_KUTTA, "generalized_alpha": GENERALIZED_ALPHA,
-                "generalized_alpha_adaptive": GENERALIZED_ALPHA}
+#: The code of each method of the catalogue (:mod:`bearing_mbs.spec.methods`) the reference engine runs, by name.
+METHOD_CODES = {method.name: code for method, code in (
+    (methods.CENTRAL_DIFFERENCE, CENTRAL_DIFFERENCE), (methods.VELOCITY_VERLET, VELOCITY_VERLET),
+    (methods.RK4, RUNGE_KUTTA), (methods.DOPRI5, RUNGE_KUTTA), (methods.GENERALIZED_ALPHA, GENERALIZED_ALPHA),
+    (methods.GENERALIZED_ALPHA_ADAPTIVE, GENERALIZED_ALPHA))}
 
 #: Run status returned by the compiled driver (``RUNNING``: no failure so far).
 RUNNING = int(Failure.NONE)

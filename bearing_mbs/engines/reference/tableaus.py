@@ -11,13 +11,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from bearing_mbs.spec import methods
+
 
 @dataclass(frozen=True)
 class ButcherTableau:
     """Explicit RK method: stages ``a`` (strictly lower triangular), weights ``b``, nodes ``c``.
 
     ``b_error`` are the weights of the embedded solution (empty for fixed-step methods); ``order`` is the
-    order of ``b`` and ``error_order`` that of the embedded pair's error estimate. ``fsal``: the last stage
+    order of ``b`` and ``error_order`` that of the embedded pair's error estimate (both from the method's entry in
+    :mod:`bearing_mbs.spec.methods`). ``fsal``: the last stage
     is evaluated at the new solution and can serve as the next step's first stage.
     """
 
@@ -51,15 +54,15 @@ class ButcherTableau:
 
 
 RK4 = ButcherTableau(
-    name="rk4",
+    name=methods.RK4.name,
     a=np.array([[0, 0, 0, 0], [0.5, 0, 0, 0], [0, 0.5, 0, 0], [0, 0, 1, 0]], dtype=float),
     b=np.array([1 / 6, 1 / 3, 1 / 3, 1 / 6]),
     c=np.array([0, 0.5, 0.5, 1.0]),
-    order=4,
+    order=methods.RK4.order,
 )
 
 DOPRI5 = ButcherTableau(
-    name="dopri5",
+    name=methods.DOPRI5.name,
     a=np.array(
         [
             [0, 0, 0, 0, 0, 0, 0],
@@ -73,11 +76,11 @@ DOPRI5 = ButcherTableau(
     ),
     b=np.array([35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84, 0]),
     c=np.array([0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1, 1]),
-    order=5,
+    order=methods.DOPRI5.order,
     b_error=np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40]),
-    error_order=4,
+    error_order=methods.DOPRI5.error_order,
     fsal=True,
 )
 
 #: Reference-engine method name → tableau, for the Runge–Kutta methods.
-TABLEAUS = {"rk4": RK4, "dopri5": DOPRI5}
+TABLEAUS = {tableau.name: tableau for tableau in (RK4, DOPRI5)}
