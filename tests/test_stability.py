@@ -29,7 +29,7 @@ from bearing_mbs.studies.table import read_rows
 from cases import SCENARIOS
 
 #: The cylindrical roller bearing's stability suite: its cases, all and reduced.
-SUITE = MODELS["bearing"].stability
+SUITE = MODELS["cylindrical_roller"].stability
 CASE_NAMES, REDUCED_CASES = SUITE.names, SUITE.reduced
 
 BASE = SCENARIOS / "seed_hss_steady.toml"
