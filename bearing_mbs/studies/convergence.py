@@ -81,6 +81,13 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
     return {"positions": float(np.abs(delta).max() / scale), **own}
 
 
+def reference_scales(spec: Spec, scene, reference: Result) -> dict:
+    """What sizes the norms, from the reference over the study's window: the model's entries for the summary (the
+    bearing's ``reference_largest_slip``; none for most models)."""
+    mask = window_mask(spec, reference.time)
+    return MODELS[spec.scenario.model].error_norms.scales(spec, scene, reference, mask)
+
+
 def end_time(spec: Spec) -> float:
     """How far the study integrates [s]: the end of its window (``[convergence] end``), else the scenario's."""
     study = spec.convergence
@@ -117,7 +124,7 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
     reference = _cached_run(spec, scene, settings.reference, directory / "reference.npz", progress)
     summary = {"scenario": spec.scenario.name, "norm": settings.norm, "reference": _describe(settings.reference),
                "reference_wall_time_s": reference.stats.wall_time_s}
-    summary.update(norms.scales(spec, scene, reference, window_mask(spec, reference.time)))
+    summary.update(reference_scales(spec, scene, reference))
     if settings.check is not None:
         progress.next_run(2, total)
         check = _cached_run(spec, scene, settings.check, directory / "check.npz", progress)
