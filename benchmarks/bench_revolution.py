@@ -34,7 +34,7 @@ import numpy as np
 
 from bearing_mbs.engines import simulate
 from bearing_mbs.models import build_scene, load_spec
-from bearing_mbs.studies.convergence import errors, largest_slip, run_setting
+from bearing_mbs.studies.convergence import errors, reference_scales, run_setting
 from bearing_mbs.studies.numerics_report import sound_slip_bound
 
 from common import SCENARIOS, write
@@ -198,7 +198,7 @@ def main() -> dict:
     for model in MODELS:
         truth = fine_reference(model)
         spec, scene = spec_of(model, [])
-        largest = largest_slip(spec, scene, truth)
+        largest = reference_scales(spec, scene, truth)["reference_largest_slip"]
         slip_bound = sound_slip_bound(largest)
         report["fine_references"][model] = {
             "wall_time_s": truth.stats.wall_time_s, "steps": truth.stats.steps,

@@ -40,8 +40,9 @@ from bearing_mbs.models.cylindrical_roller.figures import animate, bearing_figur
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.metrics import cage_speed, pair_columns, window
 from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, solve_radial
+from bearing_mbs.models.cylindrical_roller.studies import cage_models, skidding
 from bearing_mbs.runner import run_spec, write_outputs
-from bearing_mbs.studies import cage_models, skidding
+from bearing_mbs.studies.services import SERVICES
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 STEADY = SCENARIOS / "seed_hss_steady.toml"
@@ -115,7 +116,7 @@ def test_cage_slip_grows_as_the_load_falls():
     than the drag's creep: docs/skidding.md.)"""
     base = load_spec(STEADY, ["scenario.variant=dry", "cage.model=constraint", "scenario.end_time=0.1",
                               "analysis.start=0.05"])
-    rows = skidding.sweep_loads(base, (6800.0, 2000.0, 200.0))
+    rows = skidding.sweep_loads(SERVICES, base, (6800.0, 2000.0, 200.0))
     assert all(row["status"] == "success" for row in rows)
     trend = skidding.trend(rows)
     slips = [f"{row['radial_load']:g} N: {100 * row['cage_slip']:.3f} %" for row in rows]
@@ -133,7 +134,7 @@ def test_cage_slip_grows_as_the_load_falls():
 
 def test_cage_models_table_has_the_three_models():
     comparison = cage_models
-    rows, runs = comparison.compare(load_spec(SCENARIOS / "cage_models.toml",
+    rows, runs = comparison.compare(SERVICES, load_spec(SCENARIOS / "cage_models.toml",
                                               ["scenario.end_time=0.01", "analysis.start=0.005"]))
     assert [row["model"] for row in rows] == list(comparison.MODELS)
     for row in rows:

@@ -174,7 +174,7 @@ def test_a_bad_bearing_choice_lists_the_allowed_ones(override, choices):
 
 
 def test_land_guidance_needs_a_land_clearance():
-    mapping = {"scenario": {"name": "b", "model": "bearing", "end_time": 0.01},
+    mapping = {"scenario": {"name": "b", "model": "cylindrical_roller", "end_time": 0.01},
                "bearing": {"preset": "seed-hss", "cage_guidance": "inner_land"}}
     with pytest.raises(SpecError) as info:
         spec_from_mapping(mapping)

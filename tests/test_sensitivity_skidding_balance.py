@@ -10,6 +10,8 @@ import pytest
 
 from bearing_mbs.models import build_scene, spec_from_mapping
 from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
+from bearing_mbs.models.cylindrical_roller.studies.balance import BALANCE_TEXT_COLUMNS, BALANCE_UNITS
+from bearing_mbs.models.cylindrical_roller.studies.skidding_map import COLUMNS
 from bearing_mbs.spec import SpecError
 from bearing_mbs.studies.sensitivity import (
     SkiddingBalanceModel,
@@ -19,8 +21,6 @@ from bearing_mbs.studies.sensitivity import (
     run_study,
     sample,
 )
-from bearing_mbs.studies.sensitivity.models import BALANCE_TEXT_COLUMNS, BALANCE_UNITS
-from bearing_mbs.studies.skidding_map import COLUMNS
 
 ROOT = Path(__file__).resolve().parents[1]
 STEADY = ROOT / "scenarios" / "seed_hss_steady.toml"

@@ -25,9 +25,10 @@ from bearing_mbs.engines import simulate
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller import metrics
 from bearing_mbs.models.cylindrical_roller.steady_skidding import orbit_power_intensity, solve_skidding
+from bearing_mbs.models.cylindrical_roller.studies import skidding_map
 from bearing_mbs.runner import summarize
 from bearing_mbs.spec import SpecError
-from bearing_mbs.studies import skidding_map
+from bearing_mbs.studies.services import SERVICES
 
 from cases import SCENARIOS
 
@@ -94,7 +95,7 @@ def test_pure_rolling_has_no_frictional_power():
 def map_point():
     """The lubricated seed bearing at 6.8 kN, 60 °C, 1500 rpm: a map row, its solution, spec and scene."""
     base = load_spec(STEADY)
-    row, solution = skidding_map.point(base, 1500.0, 60.0, 6800.0)
+    row, solution = skidding_map.point(SERVICES, base, 1500.0, 60.0, 6800.0)
     spec = load_spec(STEADY, ["load.radial=6800"])
     return row, solution, spec, build_scene(spec)
 
@@ -156,7 +157,7 @@ def test_a_clearance_the_bearing_refuses_is_refused_before_anything_runs(clearan
     """The seed bearing takes diametral clearances up to 5 % of its roller diameter (1.25 mm) and preloads down to
     0.2 % (-50 µm); an empty list gives no map."""
     with pytest.raises(SpecError) as error:
-        skidding_map.check_grid(load_spec(STEADY), [6800.0], [60.0], [1500.0], clearances)
+        skidding_map.check_grid(SERVICES, load_spec(STEADY), [6800.0], [60.0], [1500.0], clearances)
     assert error.value.field == "--clearances"
 
 

@@ -184,6 +184,15 @@ def test_an_old_method_name_is_accepted_with_a_warning():
     assert spec.solver.exudyn.method == "rk4"
 
 
+def test_the_old_model_name_is_accepted_with_a_warning_that_names_the_new_one():
+    """The bearing model is ``cylindrical_roller``, its package's name; ``bearing`` still loads, warns, and gives the
+    same spec as the new name."""
+    with pytest.warns(FutureWarning, match="cylindrical_roller"):
+        old = load_spec(SCENARIOS / "seed_hss_steady.toml", ["scenario.model=bearing"])
+    assert old.scenario.model == "cylindrical_roller"
+    assert old == load_spec(SCENARIOS / "seed_hss_steady.toml")
+
+
 def test_an_analysis_start_past_a_shortened_run_moves_to_half_of_it(caplog):
     """One override shortens a run: the scenario's 0.05 s window start is past a 0.01 s end, so the window starts
     at 0.005 s, and the log says so."""

@@ -25,8 +25,8 @@ from bearing_mbs.spec import SpecError, read_scenario
 from cases import SCENARIOS
 
 #: A shipped scenario of every registered model.
-BASES = {"bearing": "seed_hss_steady.toml", "balls": "seed_case5.toml", "slewing_bearing": "seed_slewing_pitch.toml",
-         "journal_bearing": "seed_hybrid_journal.toml", "rotor": "seed_rotor_unbalance.toml"}
+BASES = {"cylindrical_roller": "seed_hss_steady.toml", "balls": "seed_case5.toml",
+         "slewing_bearing": "seed_slewing_pitch.toml", "journal_bearing": "seed_hybrid_journal.toml", "rotor": "seed_rotor_unbalance.toml"}
 EXAMPLES = 500
 
 scalars = st.one_of(

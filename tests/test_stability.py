@@ -16,11 +16,9 @@ import math
 import pytest
 
 from bearing_mbs.core.failures import Failure
-from bearing_mbs.models import load_spec
+from bearing_mbs.models import MODELS, load_spec
 from bearing_mbs.studies import stability
 from bearing_mbs.studies.stability import (
-    CASE_NAMES,
-    REDUCED_CASES,
     REDUCED_SOLVERS,
     SOLVERS,
     failure_reason,
@@ -29,6 +27,10 @@ from bearing_mbs.studies.stability import (
 from bearing_mbs.studies.table import read_rows
 
 from cases import SCENARIOS
+
+#: The cylindrical roller bearing's stability suite: its cases, all and reduced.
+SUITE = MODELS["cylindrical_roller"].stability
+CASE_NAMES, REDUCED_CASES = SUITE.names, SUITE.reduced
 
 BASE = SCENARIOS / "seed_hss_steady.toml"
 #: The suite's base: the document's dry model (the scenario's variant "dry").
@@ -75,7 +77,7 @@ def test_every_case_builds_a_valid_scene():
     from bearing_mbs.models import build_scene
 
     base = load_spec(BASE, DRY)
-    by_name = {case.name: case for case in stability.CASES}
+    by_name = {case.name: case for case in SUITE.cases}
     counts = {}
     for name in CASE_NAMES:
         scene = build_scene(stability.case_spec(base, by_name[name]))

@@ -20,7 +20,7 @@ import pytest
 from bearing_mbs.cli import main
 from bearing_mbs.cli.options import exit_code
 from bearing_mbs.models import load_spec
-from bearing_mbs.studies.static_check import (
+from bearing_mbs.models.cylindrical_roller.studies.static_check import (
     DEFAULT_LOADS,
     ENGINES,
     SettlingSettings,
@@ -30,6 +30,7 @@ from bearing_mbs.studies.static_check import (
     quasi_static_rest,
     running_comparison,
 )
+from bearing_mbs.studies.services import SERVICES
 
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 STEADY = SCENARIOS / "seed_hss_steady.toml"
@@ -68,7 +69,7 @@ def test_static_equilibria_match_the_quasi_static_solution(static_spec, engine):
     """
     problems = []
     for load in DEFAULT_LOADS:
-        comparison = compare_static(static_spec, load * direction(static_spec.load.angle), engine=engine)
+        comparison = compare_static(SERVICES, static_spec, load * direction(static_spec.load.angle), engine=engine)
         row = comparison.row()
         if not comparison.equilibrium.settled:
             problems.append(f"{load:.0f} N: not settled ({row['drift']:.1e} drift, {row['amplitude']:.1e} "
@@ -96,7 +97,7 @@ def test_finite_difference_stiffness_matches_the_analytic_matrix(static_spec, en
     10 % relative span of the differences: 3e-4. Measured: 0.12 % on both engines; dynamic against the
     quasi-static secant 0.017 %, asserted below 0.2 %.
     """
-    check = finite_difference_stiffness(static_spec, 20e3 * direction(-84.0), 0.05, engine=engine)
+    check = finite_difference_stiffness(SERVICES, static_spec, 20e3 * direction(-84.0), 0.05, engine=engine)
     assert check.settled, [(eq.drift, eq.amplitude, eq.message) for eq in check.equilibria]
     secant_error = np.linalg.norm(check.dynamic - check.secant, 2) / np.linalg.norm(check.secant, 2)
     message = (f"{engine}: K dynamic {check.dynamic.tolist()}, analytic {check.analytic.tolist()}, "
@@ -111,7 +112,7 @@ def test_an_unsettled_equilibrium_is_suspect_and_so_is_the_study(static_spec):
     and measured 1 ms later: window_amplitude or window_drift fails, the run is suspect, and so is the study
     (exit code 3)."""
     settings = SettlingSettings(ramp=0.002, hold=0.001, window=0.0005, output_interval=1e-4)
-    comparison = compare_static(static_spec, 20e3 * direction(static_spec.load.angle), settings, engine="exudyn")
+    comparison = compare_static(SERVICES, static_spec, 20e3 * direction(static_spec.load.angle), settings, engine="exudyn")
     equilibrium = comparison.equilibrium
     failed = {check.name for check in equilibrium.checks if not check.passed}
     assert equilibrium.status == "suspect" and not equilibrium.settled

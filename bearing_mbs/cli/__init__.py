@@ -27,7 +27,7 @@ import logging
 import sys
 
 from bearing_mbs._numba_cache import invalidate_if_stale
-from bearing_mbs.cli import journal, runs, slewing, studies
+from bearing_mbs.cli import models, runs, studies
 from bearing_mbs.cli.options import BAD_INPUT, exit_code, remove_created_output
 from bearing_mbs.core.interrupt import StopRequest, stop_on_signals
 from bearing_mbs.core.result import INTERRUPTED
@@ -37,8 +37,8 @@ from bearing_mbs.spec import SpecError
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="bearing-mbs", description=__doc__.splitlines()[0])
     commands = parser.add_subparsers(dest="command", required=True)
-    handlers = {**runs.register(commands), **studies.register(commands), **slewing.register(commands),
-                **journal.register(commands)}
+    handlers = {**runs.register(commands), **studies.register(commands)}
+    handlers.update(models.register(commands, taken=handlers))  # each model's own studies and static solutions
     args = parser.parse_args(argv)
     invalidate_if_stale()  # once per process, before anything compiles (never at import)
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")

@@ -1,5 +1,4 @@
-"""Subcommands that run or solve one scenario, or a sensitivity study: ``run``, ``stiffness``, ``advise`` and
-``sweep``."""
+"""Subcommands that run one scenario of any model, or a sensitivity study: ``run``, ``advise`` and ``sweep``."""
 
 from __future__ import annotations
 
@@ -7,7 +6,6 @@ import logging
 import sys
 
 from bearing_mbs.cli.options import add_output, add_overrides, exit_code, load_with_engine, output_directory
-from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
 
@@ -15,9 +13,8 @@ def register(commands) -> dict:
     """Add the subcommands to ``commands`` (argparse subparsers); returns {name: handler}."""
     _add_run(commands)
     _add_sweep(commands)
-    _add_stiffness(commands)
     _add_advise(commands)
-    return {"run": _run, "sweep": _sweep, "stiffness": _stiffness, "advise": _advise}
+    return {"run": _run, "sweep": _sweep, "advise": _advise}
 
 
 def _add_run(commands) -> None:
@@ -29,7 +26,8 @@ def _add_run(commands) -> None:
     run.add_argument("--check-slip", action="store_true",
                      help="also run at half the step and add the spurious-slip check (twice the cost)")
     run.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
-    run.add_argument("--animate", action="store_true", help="also write DIR/animation.gif (bearing model)")
+    run.add_argument("--animate", action="store_true",
+                     help="also write DIR/animation.gif (models with an animation: the cylindrical roller bearing)")
     run.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
@@ -39,11 +37,14 @@ def _run(args) -> int:
     every case but bad input."""
     from bearing_mbs.core.interrupt import stop_requested
     from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+    from bearing_mbs.models import MODELS
     from bearing_mbs.runner import run_spec, write_outputs
 
     spec = load_with_engine(args)
-    if args.animate and spec.scenario.model != "bearing":
-        raise SpecError("--animate", spec.scenario.model, "the bearing model only")
+    animate = MODELS[spec.scenario.model].animate
+    if args.animate and animate is None:
+        animated = [name for name, model in MODELS.items() if model.animate is not None]
+        raise SpecError("--animate", spec.scenario.model, f"a model with an animation: {', '.join(animated)}")
     directory = output_directory(args)
     scene, result = run_spec(spec, ProgressMeter() if args.quiet else TqdmProgress())
     if args.check_slip and result.completed and not stop_requested():
@@ -53,8 +54,6 @@ def _run(args) -> int:
         result.checks = (*result.checks, slip.to_check())
     summary = write_outputs(spec, scene, result, directory, figures=not args.no_figures)
     if args.animate and result.completed:
-        from bearing_mbs.models.cylindrical_roller.figures import animate
-
         animate(spec, scene, result, directory / "animation.gif")
     print(f"{summary['scenario']}: {summary['status']} ({summary['engine']} {summary['solver']}, "
           f"{summary['steps']} steps, {summary['wall_time_s']:.3g} s) -> {summary['written_to']}")
@@ -101,31 +100,6 @@ def _sweep(args) -> int:
           f"{result.stats.skipped} already stored; {', '.join(f'{n} {s}' for s, n in counts.items())}; "
           f"status {result.status} -> {result.report}")
     return exit_code(result.status)
-
-
-def _add_stiffness(commands) -> None:
-    stiffness = commands.add_parser(
-        "stiffness", help="quasi-static load distribution and 2x2 stiffness of a bearing scenario (no simulation)")
-    stiffness.add_argument("scenario", help="bearing scenario TOML file (model = 'bearing')")
-    add_output(stiffness, "output directory (new or empty, or give --overwrite): summary.json and "
-                          "load_distribution.png")
-    add_overrides(stiffness)
-    stiffness.add_argument("--no-figures", action="store_true", help="skip the PNG figure")
-
-
-def _stiffness(args) -> int:
-    """Exit 0: success; 3: suspect (a check failed; docs/status.md); 2: bad input, or a load the bearing cannot
-    carry (nothing written)."""
-    from bearing_mbs.cli.static import print_outcome
-    from bearing_mbs.models.cylindrical_roller.stiffness import require_bearing, write_stiffness
-
-    spec = load_spec(args.scenario, args.set)
-    require_bearing(spec)
-    summary = write_stiffness(spec, output_directory(args), figures=not args.no_figures)
-    print_outcome(summary, lambda s: (f"{s['scenario']}: displacement {s['radial_displacement']:.4g} m, max roller "
-                                      f"load {s['max_roller_load']:.4g} N, K_xx {s['stiffness_matrix'][0][0]:.4g} N/m, "
-                                      f"K_yy {s['stiffness_matrix'][1][1]:.4g} N/m"), args.out)
-    return exit_code(summary["status"])
 
 
 def _add_advise(commands) -> None:

@@ -1,9 +1,9 @@
-"""Subcommands of the studies: ``convergence``, ``numerics-report``, ``stability``, ``static-check``,
-``skidding``, ``skidding-map`` and ``cage-models``."""
+"""Subcommands of the studies any model may run: ``convergence``, ``numerics-report`` and ``stability``. A model's
+own studies are its commands (:attr:`bearing_mbs.models.Model.commands`, :mod:`bearing_mbs.cli.models`)."""
 
 from __future__ import annotations
 
-from bearing_mbs.cli.options import add_output, add_overrides, exit_code, names, numbers, output_directory
+from bearing_mbs.cli.options import add_output, add_overrides, names, output_directory
 from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
@@ -13,13 +13,7 @@ def register(commands) -> dict:
     _add_convergence(commands)
     _add_stability(commands)
     _add_numerics_report(commands)
-    _add_static_check(commands)
-    _add_skidding(commands)
-    _add_skidding_map(commands)
-    _add_cage_models(commands)
-    return {"convergence": _convergence, "stability": _stability, "numerics-report": _numerics_report,
-            "static-check": _static_check, "skidding": _skidding, "skidding-map": _skidding_map,
-            "cage-models": _cage_models}
+    return {"convergence": _convergence, "stability": _stability, "numerics-report": _numerics_report}
 
 
 def _add_convergence(commands) -> None:
@@ -48,7 +42,8 @@ def _convergence(args) -> int:
 def _add_stability(commands) -> None:
     stability = commands.add_parser(
         "stability", help="stability suite: which solver survives stiff and extreme variations, up to which step")
-    stability.add_argument("scenario", help="bearing scenario TOML file, the base of the variations")
+    stability.add_argument("scenario", help="scenario TOML file of a model with a stability suite (the cylindrical "
+                                            "roller bearing's), the base of the variations")
     add_output(stability, "output directory; re-running skips finished cells", resumes=True)
     stability.add_argument("--reduced", action="store_true", help="the reduced suite of the default tests")
     stability.add_argument("--cases", help="comma-separated case names (default: all; see docs/numerics.md)")
@@ -61,16 +56,17 @@ def _stability(args) -> int:
     """Exit 0: written (failing cells are results, not errors); 2: bad input."""
     from bearing_mbs.studies import stability
 
-    cases = stability.REDUCED_CASES if args.reduced else stability.CASE_NAMES
+    spec = load_spec(args.scenario, args.set)
+    suite = stability.suite(spec)  # the cases are the model's
+    cases = suite.reduced if args.reduced else suite.names
     solvers = stability.REDUCED_SOLVERS if args.reduced else stability.SOLVERS
     if args.cases:
         cases = names(args.cases)
         for name in cases:
-            if name not in stability.CASE_NAMES:
-                raise SpecError("--cases", name, f"case names among {', '.join(stability.CASE_NAMES)}")
+            if name not in suite.names:
+                raise SpecError("--cases", name, f"case names among {', '.join(suite.names)}")
     if args.solvers:
         solvers = _solver_pairs(args.solvers)
-    spec = load_spec(args.scenario, args.set)
     summary = stability.study(spec, output_directory(args), cases=cases, solvers=solvers,
                               figures=not args.no_figures)
     fraction = summary["fraction_within_factor_2"]
@@ -113,128 +109,3 @@ def _numerics_report(args) -> int:
     norms = names(args.norms)
     print(run(args.study, args.name, output_directory(args), norms, args.document_step))
     return 0
-
-
-def _add_static_check(commands) -> None:
-    check = commands.add_parser(
-        "static-check", help="settled dynamic equilibria and stiffness against the quasi-static solution")
-    check.add_argument("scenario", help="bearing scenario TOML file (the repository's: scenarios/static_check.toml)")
-    add_output(check, "output directory: static_check.json (new or empty, or give --overwrite)")
-    check.add_argument("--engines", default="exudyn,reference", help="comma-separated engines to check")
-    check.add_argument("--loads", default="5e3,20e3,68e3",
-                       help="comma-separated external loads [N] along the scenario's [load] angle")
-    check.add_argument("--stiffness-load", type=float, default=20e3, metavar="N",
-                       help="load [N] of the finite-difference stiffness (default 20e3)")
-    check.add_argument("--no-stiffness", action="store_true", help="skip the finite-difference stiffness")
-    add_overrides(check, "override any spec field of the scenario (repeatable)")
-
-
-def _static_check(args) -> int:
-    """Exit 0: every run succeeded and settled; 3: some are suspect (a failed check, or a window that did not
-    settle); 1: some run stopped early (all are written); 2: bad input, nothing ran."""
-    from bearing_mbs.studies import static_check
-
-    engines = names(args.engines)
-    directory = output_directory(args)
-    check = static_check.run(args.scenario, numbers("--loads", args.loads), engines, overrides=args.set,
-                             stiffness_load=None if args.no_stiffness else args.stiffness_load)
-    path = static_check.write(check, directory)
-    print(static_check.report(check))
-    print(f"-> {path}")
-    return exit_code(check.statuses)
-
-
-def _add_skidding(commands) -> None:
-    skidding = commands.add_parser("skidding", help="cage slip against radial load, per cage model")
-    skidding.add_argument("scenario", help="bearing scenario TOML file at constant speed, the base of the sweep")
-    add_output(skidding, "output directory: skidding_vs_load.{csv,md,png} (new or empty, or give --overwrite)")
-    skidding.add_argument("--loads", default="68000,6800,2000,680,200", help="comma-separated radial loads [N]")
-    skidding.add_argument("--cages", default="penalty,constraint", help="comma-separated cage models")
-    add_overrides(skidding, "override any spec field of the base scenario, e.g. scenario.end_time=0.3 (repeatable)")
-    skidding.add_argument("--no-figures", action="store_true", help="skip the PNG figure")
-    skidding.add_argument("--quiet", action="store_true", help="no progress bar")
-
-
-def _skidding(args) -> int:
-    """Exit 0: every run succeeded; 3: some are suspect (a failed check, or a window that did not settle); 1: some
-    stopped early (all are written); 2: bad input, nothing ran."""
-    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
-    from bearing_mbs.studies import skidding
-
-    cages = names(args.cages)
-    for name in cages:
-        if name not in skidding.CAGES:
-            raise SpecError("--cages", name, f"must be among {', '.join(skidding.CAGES)}")
-    spec, loads = load_spec(args.scenario, args.set), numbers("--loads", args.loads)
-    sweeps = skidding.run(spec, output_directory(args), loads,
-                          {name: skidding.CAGES[name] for name in cages}, figures=not args.no_figures,
-                          progress=ProgressMeter() if args.quiet else TqdmProgress())
-    print(skidding.markdown_table(sweeps))
-    print(skidding.trend_text(sweeps) + skidding.status_text(sweeps) + f"-> {args.out}")
-    return exit_code([row["status"] for rows in sweeps.values() for row in rows])
-
-
-def _add_skidding_map(commands) -> None:
-    parser = commands.add_parser("skidding-map", help="steady cage and roller slip over load x oil temperature x "
-                                 "speed (x clearance), from the quasi-static skidding balance")
-    parser.add_argument("scenario", help="lubricated bearing scenario TOML file at constant speed")
-    add_output(parser, "output directory: skidding_map.{csv,md,png} and roller_slip.png (new or empty, or give "
-                       "--overwrite)")
-    parser.add_argument("--loads", default="68000,6800,2000,680,200", help="comma-separated radial loads [N]")
-    parser.add_argument("--temperatures", default="40,60,80", help="comma-separated oil temperatures [°C]")
-    parser.add_argument("--speeds", default="1000,1500,1800", help="comma-separated shaft speeds [rpm]")
-    parser.add_argument("--clearances", default=None,
-                        help="comma-separated diametral clearances [m] (bearing.diametral_clearance, about the "
-                             "raceways' pitch circle; default: the scenario's own)")
-    parser.add_argument("--minimum-load", default=None,
-                        help="LOW,HIGH [N]: the catalogue minimum-load band to mark on the figure")
-    add_overrides(parser, "override any spec field of the base scenario (repeatable)")
-    parser.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
-    parser.add_argument("--quiet", action="store_true", help="no progress bar")
-
-
-def _skidding_map(args) -> int:
-    """Exit 0: every point solved; 1: some had no balance (``failed``; all are written); 2: bad input, nothing
-    ran."""
-    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
-    from bearing_mbs.studies import skidding_map
-
-    band = None
-    if args.minimum_load is not None:
-        band = numbers("--minimum-load", args.minimum_load)
-        if len(band) != 2 or not 0 < band[0] < band[1]:
-            raise SpecError("--minimum-load", args.minimum_load, "LOW,HIGH [N] with 0 < LOW < HIGH")
-    spec = load_spec(args.scenario, args.set)
-    loads, temperatures, speeds = (numbers(name, text) for name, text in (
-        ("--loads", args.loads), ("--temperatures", args.temperatures), ("--speeds", args.speeds)))
-    clearances = None if args.clearances is None else numbers("--clearances", args.clearances)
-    skidding_map.check_grid(spec, loads, temperatures, speeds, clearances)
-    rows = skidding_map.run(spec, output_directory(args), loads, temperatures, speeds, band,
-                            figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress(),
-                            clearances=clearances)
-    print(skidding_map.markdown_table(rows) + f"-> {args.out}")
-    return exit_code([row["status"] for row in rows])
-
-
-def _add_cage_models(commands) -> None:
-    cages = commands.add_parser("cage-models", help="compare the penalty, constraint and no-cage models")
-    cages.add_argument("scenario", help="bearing scenario TOML file, the base of the comparison")
-    add_output(cages, "output directory: cage_models.{md,csv} and two figures (new or empty, or give --overwrite)")
-    cages.add_argument("--no-roller-guided", action="store_true",
-                       help="only the three cage models, without the two roller-guided runs")
-    add_overrides(cages, "override any spec field of the base scenario (repeatable)")
-    cages.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
-    cages.add_argument("--quiet", action="store_true", help="no progress bar")
-
-
-def _cage_models(args) -> int:
-    """Exit 0: every run succeeded; 3: some are suspect (a failed check, or a window that did not settle); 1: some
-    stopped early (all are written); 2: bad input, nothing ran."""
-    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
-    from bearing_mbs.studies import cage_models
-
-    spec = load_spec(args.scenario, args.set)
-    rows = cage_models.run(spec, output_directory(args), roller_guided=not args.no_roller_guided,
-                           figures=not args.no_figures, progress=ProgressMeter() if args.quiet else TqdmProgress())
-    print(cage_models.markdown_table(rows) + f"status: {cage_models.comparison_status(rows)} -> {args.out}")
-    return exit_code([row["status"] for row in rows])

@@ -1,12 +1,18 @@
 """What a model provides, and the registry that holds the models.
 
 A model turns a validated spec into a scene and its topology (``build``), and turns a result back into what
-engineers read (``metrics``, ``figures``). Optional parts (a quasi-static solver, a linearisation for the step
-advisor) are attributes of its package that the layers above look up when they need them.
+engineers read (``metrics``, ``figures``). Optional parts (a linearisation for the step advisor, an animation, the
+model's own studies and commands) are fields of its :class:`Model` record: the layers above ask the record, never
+the model's package, so nothing outside ``models/`` imports a model's package (an import-linter contract).
+
+A model's studies and commands run scenarios, which is the business of the layers above the models (the runner,
+the study layer, the command line). A model is handed those services (:class:`StudyServices`,
+:class:`CommandLine`) rather than importing them, so that the layers stay one-way.
 """
 
 from __future__ import annotations
 
+from argparse import ArgumentParser, Namespace
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -15,6 +21,128 @@ from typing import Any
 from bearing_mbs.core.registry import Registry
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
+
+
+@dataclass(frozen=True)
+class StudyServices:
+    """What the layers above the models lend a model's studies (built once, in
+    :mod:`bearing_mbs.studies.services`):
+
+    * ``load_spec(path, overrides) -> Spec`` — a scenario file with its ``--set`` overrides, validated;
+    * ``with_overrides(spec, {dotted path: value}) -> Spec`` — a validated variation of a spec;
+    * ``build_scene(spec) -> Scene`` — the scene its model builds;
+    * ``run_spec(spec, progress=None) -> (Scene, Result)`` — one run with its checks;
+    * ``summarize(spec, scene, result) -> dict`` — the run's summary.json content.
+    """
+
+    load_spec: Callable
+    with_overrides: Callable
+    build_scene: Callable
+    run_spec: Callable
+    summarize: Callable
+
+
+@dataclass(frozen=True)
+class CommandLine:
+    """What the command line lends a model's commands: the options every subcommand shares and its exit codes
+    (built once, in :mod:`bearing_mbs.cli.models`).
+
+    * ``services`` — :class:`StudyServices`;
+    * ``add_output(parser, what, resumes=False)``, ``add_overrides(parser, what=...)`` — the ``--out DIR``
+      (and ``--overwrite``) and ``--set SECTION.KEY=VALUE`` options;
+    * ``output_directory(args) -> Path`` — ``--out`` checked and created before anything runs;
+    * ``names(text)``, ``numbers(option, text)`` — comma-separated lists;
+    * ``exit_code(statuses) -> int`` — the exit code of the worst status (docs/status.md);
+    * ``progress(quiet) -> ProgressMeter`` — a progress bar, or none with ``--quiet``;
+    * ``print_outcome(summary, describe, out)`` — a static solution's line, status and failed checks.
+    """
+
+    services: StudyServices
+    add_output: Callable
+    add_overrides: Callable
+    output_directory: Callable
+    names: Callable
+    numbers: Callable
+    exit_code: Callable
+    progress: Callable
+    print_outcome: Callable
+
+
+@dataclass(frozen=True)
+class Command:
+    """A subcommand a model offers ``bearing-mbs`` (``bearing-mbs NAME SCENARIO.toml --out DIR ...``).
+
+    * ``name``, ``help`` — the subcommand and its one-line help;
+    * ``arguments(parser, cli)`` — adds its arguments to its argparse parser (``cli`` is :class:`CommandLine`);
+    * ``run(args, cli) -> int`` — does it and returns the exit code (docs/status.md); bad input raises
+      :class:`bearing_mbs.spec.SpecError`.
+    """
+
+    name: str
+    help: str
+    arguments: Callable[[ArgumentParser, CommandLine], None]
+    run: Callable[[Namespace, CommandLine], int]
+
+
+@dataclass(frozen=True)
+class ErrorNorms:
+    """How a work–precision study (:mod:`bearing_mbs.studies.convergence`) measures a run against its reference
+    for one model.
+
+    * ``names`` — the norms the model offers (``[convergence] norm``); ``positions`` is every model's;
+    * ``window_start(spec) -> float`` — where the study's window starts [s] when ``[convergence] start`` is not
+      given;
+    * ``errors(spec, scene, run, reference, mask) -> {norm: value}`` — the model's norms of ``run`` (resampled onto
+      the reference's instants) against ``reference`` over the window ``mask`` (boolean, per instant); a
+      ``positions`` entry replaces the study's own (the first body's centre over its largest excursion);
+    * ``scales(spec, scene, reference, mask) -> dict`` — entries of the study's summary that size the norms (the
+      largest slip of the reference, say).
+    """
+
+    names: tuple[str, ...] = ("positions",)
+    window_start: Callable[[Any], float] = field(default=lambda spec: 0.0)
+    errors: Callable[..., dict] = field(default=lambda spec, scene, run, reference, mask: {})
+    scales: Callable[..., dict] = field(default=lambda spec, scene, reference, mask: {})
+
+
+@dataclass(frozen=True)
+class StabilityCase:
+    """A variation of a base scenario for the stability suite (:mod:`bearing_mbs.studies.stability`):
+    ``change(data, spec)`` edits a copy of the base's mapping in place (``spec``: the validated base)."""
+
+    name: str
+    description: str
+    change: Callable[[dict, Any], None] = field(default=lambda data, spec: None)
+
+
+@dataclass(frozen=True)
+class StabilitySuite:
+    """A model's stability suite: its ``cases`` (the first is the base itself) and the names of the reduced
+    suite's (``reduced``, the default tests' and ``--reduced``)."""
+
+    cases: tuple[StabilityCase, ...]
+    reduced: tuple[str, ...]
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(case.name for case in self.cases)
+
+
+@dataclass(frozen=True)
+class SteadyBalance:
+    """A model's quasi-static steady state, which a sensitivity study may evaluate instead of a run
+    (``[study] evaluate = "skidding_balance"``, :mod:`bearing_mbs.studies.sensitivity.models`).
+
+    * ``check(services, spec)`` — raises :class:`bearing_mbs.spec.SpecError` unless the base scenario suits it;
+    * ``evaluate(services, spec) -> dict`` — the balance's row: numbers (units in ``units``), a ``status``
+      (``success``, or ``failed`` where it has no solution) and a ``message``;
+    * ``outputs`` — the row's numeric entries; ``units`` — the unit of each.
+    """
+
+    check: Callable[[StudyServices, Any], None]
+    evaluate: Callable[[StudyServices, Any], dict]
+    outputs: tuple[str, ...]
+    units: dict
 
 
 @dataclass(frozen=True)
@@ -35,7 +163,17 @@ class Model:
     * ``units`` — the unit of each entry ``metrics`` returns (``"N"``, ``"m/s"``, ``"-"``, ``"deg"``…), written to
       summary.json's ``units`` map;
     * ``warnings(spec, scene, result) -> list[str]`` — what makes the run's numbers meaningless (the runner's
-      ``guard_warnings`` check; cheap: it runs for every run); none by default.
+      ``guard_warnings`` check; cheap: it runs for every run); none by default;
+    * ``animate(spec, scene, result, path) -> Path`` — an animated GIF of a run (``bearing-mbs run --animate``);
+      optional;
+    * ``commands`` — the subcommands the model offers the command line (:class:`Command`: its studies, its
+      static solutions); none by default;
+    * ``error_norms`` — how a work–precision study measures its runs (:class:`ErrorNorms`; by default the
+      positions norm from the start);
+    * ``stability`` — its stability suite (:class:`StabilitySuite`); optional;
+    * ``settling_check(spec, scene, result) -> Check`` — whether a run's analysis window has settled (a
+      sensitivity study's ``steady_run`` evaluator adds it to every run's checks); optional;
+    * ``steady_balance`` — its quasi-static steady state (:class:`SteadyBalance`); optional.
     """
 
     name: str
@@ -47,6 +185,12 @@ class Model:
     linearise: Callable[[Scene], Any] | None = None
     units: dict = field(default_factory=dict)
     warnings: Callable[[Any, Scene, Result], list] = field(default=lambda spec, scene, result: [])
+    animate: Callable[[Any, Scene, Result, Path], Path] | None = None
+    commands: tuple[Command, ...] = ()
+    error_norms: ErrorNorms = field(default_factory=ErrorNorms)
+    stability: StabilitySuite | None = None
+    settling_check: Callable[[Any, Scene, Result], Any] | None = None
+    steady_balance: SteadyBalance | None = None
 
 
 class ModelRegistry(Registry[Model]):

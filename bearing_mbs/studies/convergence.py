@@ -11,14 +11,15 @@ r"""Work–precision studies: error against cost for every engine, method and st
    ``DIR/work_precision.png``, and ``DIR/summary.json`` / ``DIR/convergence.md`` with the cheapest setting
    reaching each target error and the observed order of each fixed-step ladder.
 
-Every run integrates to the end of the window (``[convergence] end``, else the scenario's end time). Norms
-(relative unless noted), over the window ``[start, end]``:
+Every run integrates to the end of the window (``[convergence] end``, else the scenario's end time). The norms
+(relative unless noted) are measured over the window ``[start, end]``; ``start`` defaults to the model's
+(:class:`bearing_mbs.models.protocol.ErrorNorms`: the bearing's analysis window, else 0). Every model has
 
-* ``positions``: max |Δx|, |Δy| of the bodies' centres, over the smallest ball radius (balls model) or over
-  the largest reference inner-ring displacement (bearing model);
-* ``cage_speed``: |Δ mean cage speed| / reference mean cage speed;
-* ``roller_loads``: max |Δ inner-raceway roller load| / largest reference roller load;
-* ``slips``: max |Δ slip ratio| at loaded raceway contacts (absolute: slip ratios are already ratios).
+* ``positions``: max |Δx|, |Δy| of the first body's centre over its largest reference excursion, unless the model
+  measures it its own way (the balls: every ball's centre over the smallest ball radius);
+
+and a model adds its own through its record's ``error_norms`` (the cylindrical roller bearing's ``cage_speed``,
+``roller_loads`` and ``slips``: :mod:`bearing_mbs.models.cylindrical_roller.studies.convergence_norms`).
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ from bearing_mbs.core.result import Result
 from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import write_json
-from bearing_mbs.models import build_scene
+from bearing_mbs.models import MODELS, build_scene
 from bearing_mbs.numerics.advisor import step_advice
 from bearing_mbs.spec import Spec, SpecError, to_mapping
 from bearing_mbs.spec.convergence import RunSettings
@@ -44,7 +45,6 @@ log = logging.getLogger(__name__)
 
 COLUMNS = ("engine", "solver", "step", "tolerance", "error", "wall_time_s", "force_evaluations", "steps",
            "status", "positions", "cage_speed", "roller_loads", "slips")
-BEARING_NORMS = ("cage_speed", "roller_loads", "slips")
 
 
 def solver_for(spec: Spec, run: RunSettings, value: float):
@@ -60,10 +60,11 @@ def ladder(run: RunSettings) -> list[tuple[float | None, float | None]]:
 
 
 def window_mask(spec: Spec, times: np.ndarray) -> np.ndarray:
+    """The instants of ``times`` [s] inside the study's window."""
     study = spec.convergence
     start = study.start
     if start is None:
-        start = spec.analysis.window_start(spec.scenario.end_time) if spec.scenario.model == "bearing" else 0.0
+        start = MODELS[spec.scenario.model].error_norms.window_start(spec)
     end = study.end if study.end is not None else np.inf
     return (times >= start - 1e-12) & (times <= end + 1e-12)
 
@@ -72,43 +73,19 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
     """Every applicable norm of ``result`` against ``reference`` (see the module docstring)."""
     mask = window_mask(spec, reference.time)
     run = resample_result(result, reference.time)
-    norms = {}
-    if spec.scenario.model == "balls":
-        translational = np.concatenate([[3 * i, 3 * i + 1] for i in range(len(scene.bodies))])
-        scale = min(ball.radius for ball in spec.balls)
-    else:
-        translational = np.array([0, 1])
-        scale = np.abs(reference.position[mask][:, :2]).max()
-    delta = run.position[mask][:, translational] - reference.position[mask][:, translational]
-    norms["positions"] = float(np.abs(delta).max() / scale)
-    if spec.scenario.model == "bearing":
-        from bearing_mbs.models.cylindrical_roller import metrics as skidding
-
-        cage_run, cage_ref = skidding.cage_speed(scene, run)[mask], skidding.cage_speed(scene, reference)[mask]
-        norms["cage_speed"] = float(abs(cage_run.mean() - cage_ref.mean()) / abs(cage_ref.mean()))
-        inner = skidding.pair_columns(scene, "inner_race")
-        loads_run = run.pair_series("normal_force")[mask][:, inner]
-        loads_ref = reference.pair_series("normal_force")[mask][:, inner]
-        norms["roller_loads"] = float(np.abs(loads_run - loads_ref).max() / loads_ref.max())
-        fraction = spec.analysis.load_fraction
-        slips = [np.abs(skidding.slip_ratios(scene, run, race, fraction)[mask]
-                        - skidding.slip_ratios(scene, reference, race, fraction)[mask])
-                 for race in ("inner_race", "outer_race")]
-        both = np.concatenate([s.ravel() for s in slips])
-        norms["slips"] = float(np.nanmax(both)) if np.isfinite(both).any() else float("nan")
-    return norms
+    own = MODELS[spec.scenario.model].error_norms.errors(spec, scene, run, reference, mask)
+    if "positions" in own:
+        return own
+    scale = np.abs(reference.position[mask][:, :2]).max()
+    delta = run.position[mask][:, :2] - reference.position[mask][:, :2]
+    return {"positions": float(np.abs(delta).max() / scale), **own}
 
 
-def largest_slip(spec: Spec, scene, result: Result) -> float:
-    """The largest |slip ratio| of ``result`` at loaded contacts over the study's window (the scale of the
-    ``slips`` norm)."""
-    from bearing_mbs.models.cylindrical_roller import metrics as skidding
-
-    mask = window_mask(spec, result.time)
-    fraction = spec.analysis.load_fraction
-    slips = [np.abs(skidding.slip_ratios(scene, result, race, fraction)[mask]) for race in ("inner_race", "outer_race")]
-    both = np.concatenate([s.ravel() for s in slips])
-    return float(np.nanmax(both)) if np.isfinite(both).any() else 0.0
+def reference_scales(spec: Spec, scene, reference: Result) -> dict:
+    """What sizes the norms, from the reference over the study's window: the model's entries for the summary (the
+    bearing's ``reference_largest_slip``; none for most models)."""
+    mask = window_mask(spec, reference.time)
+    return MODELS[spec.scenario.model].error_norms.scales(spec, scene, reference, mask)
 
 
 def end_time(spec: Spec) -> float:
@@ -132,8 +109,10 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
     scene = build_scene(spec)
     if settings.end is not None and settings.end > spec.scenario.end_time:
         raise SpecError("convergence.end", settings.end, f"<= the scenario's end time {spec.scenario.end_time:g} s")
-    if spec.scenario.model == "balls" and settings.norm in BEARING_NORMS:
-        raise SpecError("convergence.norm", settings.norm, "the balls model has the positions norm only")
+    norms = MODELS[spec.scenario.model].error_norms
+    if settings.norm not in norms.names:
+        raise SpecError("convergence.norm", settings.norm,
+                        f"the {spec.scenario.model} model has the norms {', '.join(norms.names)}")
 
     for run in (settings.reference, *([settings.check] if settings.check is not None else []), *settings.runs):
         for step, tolerance in ladder(run):  # every setting the scene cannot run is refused before the first run
@@ -145,8 +124,7 @@ def study(spec: Spec, directory: str | Path, progress: ProgressMeter | None = No
     reference = _cached_run(spec, scene, settings.reference, directory / "reference.npz", progress)
     summary = {"scenario": spec.scenario.name, "norm": settings.norm, "reference": _describe(settings.reference),
                "reference_wall_time_s": reference.stats.wall_time_s}
-    if spec.scenario.model == "bearing":
-        summary["reference_largest_slip"] = largest_slip(spec, scene, reference)
+    summary.update(reference_scales(spec, scene, reference))
     if settings.check is not None:
         progress.next_run(2, total)
         check = _cached_run(spec, scene, settings.check, directory / "check.npz", progress)

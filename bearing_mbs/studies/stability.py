@@ -1,8 +1,9 @@
-r"""Stability suite: which engine and solver survive stiff and extreme bearing cases, and up to which step.
+r"""Stability suite: which engine and solver survive stiff and extreme cases of a model, and up to which step.
 
-``bearing-mbs stability SCENARIO.toml --out DIR [--reduced]`` varies a bearing scenario (:data:`CASES`: contact
-stiffness ×0.01 to ×100, v_reg 0.1 to 1e-4 m/s, restitution 0.1 and 1, speed to 10 000 rpm, zero and 5× load,
-preload and 200 µm clearance, Z = 8 and 30, a full complement) and, for every engine and solver of
+``bearing-mbs stability SCENARIO.toml --out DIR [--reduced]`` varies a scenario by its model's cases
+(:attr:`bearing_mbs.models.Model.stability`; the cylindrical roller bearing's: contact stiffness ×0.01 to ×100,
+v_reg 0.1 to 1e-4 m/s, restitution 0.1 and 1, speed to 10 000 rpm, zero and 5× load, preload and 200 µm clearance,
+Z = 8 and 30, a full complement) and, for every engine and solver of
 :data:`SOLVERS`, runs short **probes** from the scenario's start: the ring centred, the load applied at once, so
 the first load peak (about twice the static load, more with clearance) is inside every probe. A probe lasts
 1.25 × the advisor's time of that peak (at least 0.4 ms), and for an explicit method at least 2000 steps of its
@@ -51,21 +52,18 @@ from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.json import write_json
-from bearing_mbs.models import build_scene, spec_from_mapping
+from bearing_mbs.models import MODELS, build_scene, spec_from_mapping
+from bearing_mbs.models.protocol import StabilityCase, StabilitySuite
 from bearing_mbs.numerics.advisor import advise, step_advice
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.studies.common import refined_setting, solver_at, spec_mapping, with_overrides
 from bearing_mbs.studies.spurious_slip import compare_slips
-from bearing_mbs.studies.stability_cases import (  # noqa: F401  (re-exported: the suite's cases and solvers)
+from bearing_mbs.studies.stability_cases import (  # noqa: F401  (re-exported: the suite's solvers)
     ADAPTIVE,
-    CASE_NAMES,
-    CASES,
     IMPLICIT,
     ORDERS,
-    REDUCED_CASES,
     REDUCED_SOLVERS,
     SOLVERS,
-    Case,
 )
 from bearing_mbs.studies.stability_report import advised_figure, heat_map, markdown, summarize
 from bearing_mbs.studies.table import append_row, read_rows, text
@@ -332,7 +330,17 @@ def _tolerance_walk(runner: CellRunner, tolerances: list[float]) -> dict:
 # --------------------------------------------------------------------------------------------------------------
 
 
-def case_spec(base: Spec, case: Case) -> Spec:
+def suite(spec: Spec) -> StabilitySuite:
+    """The stability suite of the scenario's model; raises :class:`SpecError` for a model without one."""
+    found = MODELS[spec.scenario.model].stability
+    if found is None:
+        with_suites = [name for name, model in MODELS.items() if model.stability is not None]
+        raise SpecError("scenario.model", spec.scenario.model,
+                        f"a model with a stability suite: {', '.join(with_suites)}")
+    return found
+
+
+def case_spec(base: Spec, case: StabilityCase) -> Spec:
     """The base scenario varied by ``case`` (without the base's study section)."""
     data = spec_mapping(base)
     data.pop("convergence", None)
@@ -362,15 +370,16 @@ COLUMNS = ("case", "engine", "solver", "kind", "probe_time", "advised_limit", "l
            "fail_reason", "verdict", "wall_time_s", "probes", "ladder")
 
 
-def study(base: Spec, directory: str | Path, cases=CASE_NAMES, solvers=SOLVERS,
+def study(base: Spec, directory: str | Path, cases=None, solvers=SOLVERS,
           settings: StabilitySettings = StabilitySettings(), figures: bool = True) -> dict:
-    """Run the stability suite of ``base`` into ``directory``; returns the summary."""
-    if base.scenario.model != "bearing":
-        raise SpecError("scenario.model", base.scenario.model, "the stability suite varies a bearing scenario")
-    unknown = [name for name in cases if name not in CASE_NAMES]
+    """Run the stability suite of ``base`` into ``directory``; returns the summary. ``cases``: names of the
+    model's cases (default: all of them)."""
+    cases_of_model = suite(base)
+    cases = cases_of_model.names if cases is None else cases
+    unknown = [name for name in cases if name not in cases_of_model.names]
     if unknown:
-        raise SpecError("cases", unknown, f"must be among: {', '.join(CASE_NAMES)}")
-    by_name = {case.name: case for case in CASES}
+        raise SpecError("cases", unknown, f"must be among: {', '.join(cases_of_model.names)}")
+    by_name = {case.name: case for case in cases_of_model.cases}
     for name in cases:  # a solver the engine cannot run on a case is refused before the first probe
         spec = case_spec(base, by_name[name])
         scene = build_scene(spec)

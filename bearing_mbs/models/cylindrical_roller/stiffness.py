@@ -53,8 +53,9 @@ MAX_STATIC_LOAD_RATIO = 1.0
 
 
 def require_bearing(spec: Spec) -> None:
-    if spec.scenario.model != "bearing":
-        raise SpecError("scenario.model", spec.scenario.model, "the quasi-static solver needs model = 'bearing'")
+    if spec.scenario.model != "cylindrical_roller":
+        raise SpecError("scenario.model", spec.scenario.model,
+                        "the quasi-static solver needs model = 'cylindrical_roller'")
 
 
 def ring_weight(spec: Spec) -> float:

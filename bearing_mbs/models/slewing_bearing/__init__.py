@@ -7,8 +7,9 @@ element.
 """
 
 from bearing_mbs.models.protocol import Model
+from bearing_mbs.models.slewing_bearing.commands import COMMANDS
 from bearing_mbs.models.slewing_bearing.pitch import PITCH_UNITS, build_pitch_scene, pitch_figures, pitch_metrics
 from bearing_mbs.models.slewing_bearing.spec import MODEL_NAME, SlewingSpec
 
 MODEL = Model(name=MODEL_NAME, spec=SlewingSpec, build=build_pitch_scene, metrics=pitch_metrics,
-              figures=pitch_figures, units=PITCH_UNITS)
+              figures=pitch_figures, units=PITCH_UNITS, commands=COMMANDS)

@@ -7,10 +7,10 @@ of the same input are one run.
 
 - :class:`SimulationModel`: a ``bearing_mbs`` scenario (any ``[scenario] model``), run by
   :func:`bearing_mbs.runner.run_spec`; its summary is :func:`bearing_mbs.runner.summarize`.
-- :class:`SteadyRunModel`: the same run of a bearing scenario, read for steady values: its checks get
-  ``window_settled`` (:mod:`bearing_mbs.studies.settling`), so a run whose window has not settled is ``suspect``.
-- :class:`SkiddingBalanceModel`: the same sample of a lubricated bearing scenario, evaluated by the quasi-static
-  skidding balance instead of a run (a point of :mod:`bearing_mbs.studies.skidding_map`, seconds where a light-load
+- :class:`SteadyRunModel`: the same run, read for steady values: its checks get its model's settling check (the
+  cylindrical roller bearing's ``window_settled``), so a run whose window has not settled is ``suspect``.
+- :class:`SkiddingBalanceModel`: the same sample, evaluated by its model's quasi-static steady balance instead of a
+  run (the cylindrical roller bearing's skidding balance, a point of its skidding map: seconds where a light-load
   run needs seconds of simulated time to settle); a point without a balance is a ``failed`` run.
 - :class:`IshigamiModel`: SALib's Ishigami–Homma test function, whose Sobol indices are known
   analytically; it goes through the same sample → evaluate → persist → analyze pipeline and checks it.
@@ -31,7 +31,8 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from bearing_mbs.models import spec_from_mapping
+from bearing_mbs.models import MODELS, spec_from_mapping
+from bearing_mbs.models.loading import current_model_name
 from bearing_mbs.spec import SpecError, apply_override, read_scenario, to_mapping
 from bearing_mbs.spec.fields import require
 
@@ -97,10 +98,9 @@ class SimulationModel(RunModel):
 
     def outputs(self) -> tuple[str, ...]:
         """The run's numbers (cost, counts) and the metrics of the scenario's model (their ``units`` keys)."""
-        from bearing_mbs.models import MODELS
         from bearing_mbs.runner.units import RUN_UNITS
 
-        return (*RUN_UNITS, *MODELS[self._base["scenario"]["model"]].units)
+        return (*RUN_UNITS, *MODELS[current_model_name(self._base["scenario"]["model"])].units)
 
     def evaluate(self, data: dict, keep_result: bool = False) -> tuple[dict, dict[str, bytes]]:
         from bearing_mbs.runner import run_spec, summarize
@@ -137,92 +137,66 @@ class SimulationModel(RunModel):
         object.__setattr__(self, "_base", None)
 
 
-def _require_bearing(spec, evaluator: str) -> None:
-    require(spec.scenario.model == "bearing", "scenario.model", spec.scenario.model,
-            f"the {evaluator} evaluator reads a bearing's cage slip: a bearing scenario")
+def _model_part(spec, part: str, evaluator: str):
+    """The part (a field of :class:`bearing_mbs.models.Model`) of the spec's model that ``evaluator`` needs;
+    raises :class:`SpecError` for a model without it."""
+    found = getattr(MODELS[spec.scenario.model], part)
+    with_part = [name for name, model in MODELS.items() if getattr(model, part) is not None]
+    require(found is not None, "scenario.model", spec.scenario.model,
+            f"the {evaluator} evaluator needs a model with a {part.replace('_', ' ')}: {', '.join(with_part)}")
+    return found
 
 
 @dataclass(frozen=True)
 class SteadyRunModel(SimulationModel):
-    """A bearing scenario's run read for steady values: :class:`SimulationModel`'s run whose checks get
-    ``window_settled`` (the cage slip's means over the analysis window's two halves agree to the pocket-play
-    resolution plus 5 %: :func:`bearing_mbs.studies.settling.window_settled`). A run still approaching its steady
-    slip is ``suspect``, and the study with it. The base scenario must be a bearing's."""
+    """A scenario's run read for steady values: :class:`SimulationModel`'s run whose checks get its model's
+    settling check (:attr:`bearing_mbs.models.Model.settling_check`; the cylindrical roller bearing's
+    ``window_settled``: the cage slip's means over the analysis window's two halves agree to the pocket-play
+    resolution plus 5 %). A run still approaching its steady state is ``suspect``, and the study with it. The base
+    scenario's model must have a settling check."""
 
     name: str = "steady_run"
 
     def __post_init__(self):
         super().__post_init__()
-        _require_bearing(spec_from_mapping(self._base), "steady_run")
+        _model_part(spec_from_mapping(self._base), "settling_check", "steady_run")
 
     def study_checks(self, spec, scene, result) -> tuple:
-        from bearing_mbs.studies.settling import window_settled
-
-        return (window_settled(spec, scene, result),)
+        return (MODELS[spec.scenario.model].settling_check(spec, scene, result),)
 
     def describe(self) -> str:
         return f"{super().describe()}; each run's analysis window held to settle (window_settled)"
 
 
-#: Units of the numbers a skidding-balance point reports (the columns of
-#: :data:`bearing_mbs.studies.skidding_map.COLUMNS` but its status, message and checks): the point's inputs, the
-#: steady slips (fractions), the raceways' frictional power intensity and the losses.
-BALANCE_UNITS = {
-    "speed_rpm": "rpm",
-    "temperature": "°C",
-    "clearance": "m",
-    "radial_load": "N",
-    "total_load": "N",
-    "cage_slip": "-",
-    "max_roller_slip_loaded": "-",
-    "max_roller_slip_unloaded": "-",
-    "max_inner_slide_to_roll": "-",
-    "max_frictional_power_intensity": "W/mm²",
-    "max_frictional_power_intensity_inner": "W/mm²",
-    "max_frictional_power_intensity_outer": "W/mm²",
-    "friction_torque": "N m",
-    "power_loss": "W",
-    "land_torque": "N m",
-    "wall_time_s": "s",
-}
-#: The skidding map's columns that are not numbers.
-BALANCE_TEXT_COLUMNS = ("status", "message", "checks")
-
-
 @dataclass(frozen=True)
 class SkiddingBalanceModel(SimulationModel):
-    """A lubricated bearing scenario evaluated by the quasi-static skidding balance
-    (:func:`bearing_mbs.models.cylindrical_roller.steady_skidding.solve_skidding`) instead of a run: the spec is
-    built exactly as for a run (the base, its overrides, the sampled values), and its summary is the skidding map's
-    row for it (:func:`bearing_mbs.studies.skidding_map.point`: cage slip, largest roller slips in and out of the
-    load zone, slide-to-roll ratio, friction torque, power loss; units in :data:`BALANCE_UNITS`), with a ``status``:
-    ``success``, or ``failed`` where the balance has no solution (its ``message`` says why; its values are null).
-    The base scenario must be a caged bearing with a lubricant temperature
-    (:func:`bearing_mbs.studies.skidding_map.check_grid`), at constant speed and load."""
+    """A scenario evaluated by its model's quasi-static steady balance (:attr:`bearing_mbs.models.Model.
+    steady_balance`) instead of a run: the spec is built exactly as for a run (the base, its overrides, the sampled
+    values), and its summary is the balance's row, with a ``status``: ``success``, or ``failed`` where the balance
+    has no solution (its ``message`` says why; its values are null). The cylindrical roller bearing's is the
+    skidding map's point (:mod:`bearing_mbs.models.cylindrical_roller.studies.balance`: cage slip, largest roller
+    slips in and out of the load zone, slide-to-roll ratio, friction torque, power loss); its base scenario must be a
+    caged bearing with a lubricant temperature, at constant speed and load."""
 
     name: str = "skidding_balance"
 
     def __post_init__(self):
-        from bearing_mbs.studies.skidding_map import check_grid
+        from bearing_mbs.studies.services import SERVICES
 
         super().__post_init__()
         spec = spec_from_mapping(self._base)
-        _require_bearing(spec, "skidding_balance")
-        check_grid(spec, [spec.load.radial], [spec.lubricant.temperature], [spec.drive.speed_rpm])
+        _model_part(spec, "steady_balance", "skidding_balance").check(SERVICES, spec)
 
     def outputs(self) -> tuple[str, ...]:
-        """The skidding map's numeric columns."""
-        from bearing_mbs.studies.skidding_map import COLUMNS
-
-        return tuple(column for column in COLUMNS if column not in BALANCE_TEXT_COLUMNS)
+        """The balance's numeric entries."""
+        return MODELS[current_model_name(self._base["scenario"]["model"])].steady_balance.outputs
 
     def evaluate(self, data: dict, keep_result: bool = False) -> tuple[dict, dict[str, bytes]]:
         from bearing_mbs.io.json import json_safe, rounded
-        from bearing_mbs.studies.skidding_map import point
+        from bearing_mbs.studies.services import SERVICES
 
         spec = spec_from_mapping(data)
-        row, _ = point(spec, spec.drive.speed_rpm, spec.lubricant.temperature, spec.load.radial)
-        row["units"] = {key: BALANCE_UNITS[key] for key in row if key in BALANCE_UNITS}
+        row = MODELS[spec.scenario.model].steady_balance.evaluate(SERVICES, spec)
         return rounded(json_safe(row)), {}
 
     def describe(self) -> str:

@@ -64,9 +64,9 @@ from bearing_mbs.core.result import SUCCESS
 from bearing_mbs.core.scene import Profile
 from bearing_mbs.core.status import worst_status
 from bearing_mbs.io.json import write_json
-from bearing_mbs.models import load_spec
 from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
 from bearing_mbs.models.cylindrical_roller.stiffness import quasi_static_load, require_bearing, solve_scenario
+from bearing_mbs.models.protocol import StudyServices
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import in_range, one_of, positive, require
 
@@ -173,15 +173,14 @@ class StaticEquilibrium:
                 "checks": [check.to_dict() for check in self.checks]}
 
 
-def static_equilibrium(spec: Spec, applied, settings: SettlingSettings = SettlingSettings(),
+def static_equilibrium(services: StudyServices, spec: Spec, applied, settings: SettlingSettings = SettlingSettings(),
                        engine: str | None = None) -> StaticEquilibrium:
     """Settle the scenario's bearing at rest under ``applied`` = (F_x, F_y) [N] on ``engine`` (default: the
     scenario's) and measure it."""
     from bearing_mbs.models.cylindrical_roller.metrics import pair_columns, roller_orbit_angles
-    from bearing_mbs.runner import run_spec
 
     settled_spec = settle_spec(spec, applied, settings, engine)
-    scene, result = run_spec(settled_spec)
+    scene, result = services.run_spec(settled_spec)
     mask = result.time >= settled_spec.analysis.start - 1e-12
     ring = result.position[mask][:, :2]
     displacement = ring.mean(axis=0)
@@ -264,10 +263,11 @@ class StaticComparison:
         }
 
 
-def compare_static(spec: Spec, applied, settings: SettlingSettings = SettlingSettings(),
+def compare_static(services: StudyServices, spec: Spec, applied, settings: SettlingSettings = SettlingSettings(),
                    engine: str | None = None) -> StaticComparison:
     """Settle ``applied`` on ``engine`` and compare with :func:`quasi_static_rest`."""
-    return StaticComparison(static_equilibrium(spec, applied, settings, engine), quasi_static_rest(spec, applied))
+    return StaticComparison(static_equilibrium(services, spec, applied, settings, engine),
+                            quasi_static_rest(spec, applied))
 
 
 @dataclass(frozen=True)
@@ -312,7 +312,7 @@ class StiffnessCheck:
                 "status": self.status, "runs": [eq.outcome() for eq in self.equilibria]}
 
 
-def finite_difference_stiffness(spec: Spec, applied, relative_step: float = 0.05,
+def finite_difference_stiffness(services: StudyServices, spec: Spec, applied, relative_step: float = 0.05,
                                 settings: SettlingSettings = SettlingSettings(),
                                 engine: str | None = None) -> StiffnessCheck:
     """Central-difference stiffness of the engine's static equilibria around ``applied`` (F_x, F_y) [N];
@@ -323,8 +323,8 @@ def finite_difference_stiffness(spec: Spec, applied, relative_step: float = 0.05
     positive("applied", step)
     equilibria, dynamic, secant = [], np.zeros((2, 2)), np.zeros((2, 2))
     for i, axis in enumerate(np.eye(2)):
-        plus = static_equilibrium(spec, applied + step * axis, settings, engine)
-        minus = static_equilibrium(spec, applied - step * axis, settings, engine)
+        plus = static_equilibrium(services, spec, applied + step * axis, settings, engine)
+        minus = static_equilibrium(services, spec, applied - step * axis, settings, engine)
         equilibria += [plus, minus]
         dynamic[:, i] = (plus.displacement - minus.displacement) / (2 * step)
         secant[:, i] = (quasi_static_rest(spec, applied + step * axis).displacement
@@ -388,7 +388,7 @@ class StaticCheck:
                 "stiffness": [s.row() for s in self.stiffness]}
 
 
-def run(scenario: str | Path, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides=(),
+def run(services: StudyServices, scenario: str | Path, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides=(),
         stiffness_load: float | None = 20e3, stiffness_angle: float = -84.0, relative_step: float = 0.05,
         settings: SettlingSettings = SettlingSettings()) -> StaticCheck:
     """The whole cross-check: loads [N] along ``[load] angle`` on each engine, then the finite-difference
@@ -396,7 +396,7 @@ def run(scenario: str | Path, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides
 
     With the defaults (scenarios/static_check.toml): 2 engines × (3 + 4) settled runs of 25 ms.
     """
-    spec = load_spec(scenario, list(overrides))
+    spec = services.load_spec(scenario, list(overrides))
     require_bearing(spec)
     for engine in engines:
         if engine not in ENGINES:
@@ -407,13 +407,13 @@ def run(scenario: str | Path, loads=DEFAULT_LOADS, engines=ENGINES, *, overrides
         positive("stiffness_load", stiffness_load)
     angle = math.radians(spec.load.angle)
     direction = np.array([math.cos(angle), math.sin(angle)])
-    comparisons = tuple(compare_static(spec, load * direction, settings, engine) for engine in engines
+    comparisons = tuple(compare_static(services, spec, load * direction, settings, engine) for engine in engines
                         for load in loads)
     stiffness = ()
     if stiffness_load is not None:
         applied = stiffness_load * np.array([math.cos(math.radians(stiffness_angle)),
                                              math.sin(math.radians(stiffness_angle))])
-        stiffness = tuple(finite_difference_stiffness(spec, applied, relative_step, settings, engine)
+        stiffness = tuple(finite_difference_stiffness(services, spec, applied, relative_step, settings, engine)
                           for engine in engines)
     return StaticCheck(comparisons, stiffness)
 

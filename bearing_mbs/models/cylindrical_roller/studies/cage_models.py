@@ -8,7 +8,7 @@ figures, ``cage_models_slip.png`` (cage slip against time) and ``cage_models_loa
 orbital angle).
 
 Each row carries its run's ``status`` and ``checks`` (docs/status.md) with the ``window_settled`` check of its
-analysis window (:mod:`bearing_mbs.studies.settling`); the comparison's status is its worst run's.
+analysis window (:mod:`.settling`); the comparison's status is its worst run's.
 """
 
 from __future__ import annotations
@@ -26,10 +26,10 @@ from bearing_mbs.core.status import failed_check_names, worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.figures import cage_slip_series
 from bearing_mbs.models.cylindrical_roller.metrics import load_distribution, roller_indices, window
-from bearing_mbs.runner import run_spec, summarize
+from bearing_mbs.models.cylindrical_roller.name import MODEL_NAME
+from bearing_mbs.models.cylindrical_roller.studies.settling import window_settled
+from bearing_mbs.models.protocol import StudyServices
 from bearing_mbs.spec import Spec, SpecError
-from bearing_mbs.studies.common import with_overrides
-from bearing_mbs.studies.settling import window_settled
 
 log = logging.getLogger(__name__)
 
@@ -72,22 +72,23 @@ class ModelRun:
     summary: dict
 
 
-def compare(base: Spec, cases: dict[str, dict] | None = None,
+def compare(services: StudyServices, base: Spec, cases: dict[str, dict] | None = None,
             progress: ProgressMeter | None = None) -> tuple[list[dict], list[ModelRun]]:
     """Run ``base`` once per case of ``cases`` (label -> fields to change; default :data:`CASES`); returns the
     table rows (one dict per case, keyed as :data:`COLUMNS`, values in SI units) and the runs. Every case is
-    validated before the first run."""
-    if base.scenario.model != "bearing":
+    validated before the first run (``services``: :class:`~bearing_mbs.models.protocol.StudyServices`)."""
+    if base.scenario.model != MODEL_NAME:
         raise SpecError("scenario.model", base.scenario.model, "the cage-model comparison varies a bearing scenario")
-    specs = {label: with_overrides(base, changes) for label, changes in (CASES if cases is None else cases).items()}
+    cases = CASES if cases is None else cases
+    specs = {label: services.with_overrides(base, changes) for label, changes in cases.items()}
     progress = progress or ProgressMeter()
     runs = []
     for k, (label, spec) in enumerate(specs.items()):
         progress.next_run(k + 1, len(specs))
-        scene, result = run_spec(spec, progress)
+        scene, result = services.run_spec(spec, progress)
         if result.completed:
             result.checks = (*result.checks, window_settled(spec, scene, result))
-        runs.append(ModelRun(label, spec, scene, result, summarize(spec, scene, result)))
+        runs.append(ModelRun(label, spec, scene, result, services.summarize(spec, scene, result)))
         log.info("%s: cage slip %s (%s)", label, runs[-1].summary.get("cage_slip"), runs[-1].summary["status"])
     return [table_row(r) for r in runs], runs
 
@@ -181,11 +182,11 @@ def write(rows: list[dict], runs: list[ModelRun], directory: str | Path, figures
     return paths
 
 
-def run(base: Spec, directory: str | Path, roller_guided: bool = True, figures: bool = True,
+def run(services: StudyServices, base: Spec, directory: str | Path, roller_guided: bool = True, figures: bool = True,
         progress: ProgressMeter | None = None) -> list[dict]:
     """:func:`compare` the cases of :data:`CASES` (and of :data:`ROLLER_GUIDED` when ``roller_guided``), then
     :func:`write` the outputs into ``directory``; returns the table rows. The runs' warnings are logged."""
-    rows, runs = compare(base, {**CASES, **ROLLER_GUIDED} if roller_guided else CASES, progress)
+    rows, runs = compare(services, base, {**CASES, **ROLLER_GUIDED} if roller_guided else CASES, progress)
     write(rows, runs, directory, figures)
     for row in rows:
         for warning in row["warnings"]:

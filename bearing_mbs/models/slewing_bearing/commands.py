@@ -3,13 +3,8 @@
 
 from __future__ import annotations
 
-from bearing_mbs.cli.static import register_static
-
-
-def register(commands) -> dict:
-    return register_static(commands, "slewing", "quasi-static load distribution of a four-point-contact slewing "
-                                                "bearing (document 002; no simulation)",
-                           "slewing_bearing", _solve, _describe)
+from bearing_mbs.models.slewing_bearing.spec import MODEL_NAME
+from bearing_mbs.models.static_command import static_command
 
 
 def _solve(spec, directory, figures):
@@ -23,3 +18,8 @@ def _describe(summary) -> str:
             else f"displacement {summary['displacement']}")
     return (f"{summary['scenario']}: {summary['balls']} balls, {summary['rings']} rings, {what}, max ball load "
             f"{summary['max_ball_load']:.4g} N, max contact pressure {summary['max_contact_pressure'] / 1e6:.4g} MPa")
+
+
+#: The model's subcommands.
+COMMANDS = (static_command("slewing", "quasi-static load distribution of a four-point-contact slewing bearing "
+                                      "(document 002; no simulation)", MODEL_NAME, _solve, _describe),)

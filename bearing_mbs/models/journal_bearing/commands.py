@@ -3,13 +3,8 @@
 
 from __future__ import annotations
 
-from bearing_mbs.cli.static import register_static
-
-
-def register(commands) -> dict:
-    return register_static(commands, "journal", "static solution of a hydrostatic, hydrodynamic or hybrid journal "
-                                                "bearing (document 001; no simulation)",
-                           "journal_bearing", _solve, _describe)
+from bearing_mbs.models.journal_bearing.spec import MODEL_NAME
+from bearing_mbs.models.static_command import static_command
 
 
 def _solve(spec, directory, figures):
@@ -25,3 +20,8 @@ def _describe(summary) -> str:
     return (f"{summary['scenario']}: load {number('load_capacity')} N at ε = {summary['eccentricity_ratio']:g}, "
             f"attitude {number('attitude_angle')} deg, flow {number('flow')} m³/s, "
             f"stiffness ΔF/Δe {number('static_stiffness', 1e-6)} N/µm")
+
+
+#: The model's subcommands.
+COMMANDS = (static_command("journal", "static solution of a hydrostatic, hydrodynamic or hybrid journal bearing "
+                                      "(document 001; no simulation)", MODEL_NAME, _solve, _describe),)

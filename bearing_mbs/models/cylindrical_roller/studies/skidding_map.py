@@ -40,17 +40,17 @@ from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import FAILED, SUCCESS
 from bearing_mbs.core.status import worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
-from bearing_mbs.models import build_scene
 from bearing_mbs.models.cylindrical_roller.metrics import W_PER_MM2
+from bearing_mbs.models.cylindrical_roller.name import MODEL_NAME
 from bearing_mbs.models.cylindrical_roller.steady_skidding import (
     SkiddingSolution,
     orbit_power_intensity,
     solve_skidding,
 )
+from bearing_mbs.models.cylindrical_roller.studies.skidding import total_radial_load
+from bearing_mbs.models.protocol import StudyServices
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import finite, positive
-from bearing_mbs.studies.common import with_overrides
-from bearing_mbs.studies.skidding import total_radial_load
 
 log = logging.getLogger(__name__)
 
@@ -68,10 +68,10 @@ PICOMETRE_DIGITS = 12
 CLEARANCE_STYLES = ("-", "--", ":", "-.")
 
 
-def check_grid(base: Spec, loads, temperatures, speeds, clearances=None) -> None:
+def check_grid(services: StudyServices, base: Spec, loads, temperatures, speeds, clearances=None) -> None:
     """Raise :class:`SpecError` before anything runs unless the grid is usable. ``clearances``: diametral
     clearances [m], or None for the base's own."""
-    if base.scenario.model != "bearing":
+    if base.scenario.model != MODEL_NAME:
         raise SpecError("scenario.model", base.scenario.model, "the skidding map varies a bearing scenario")
     if base.cage.model == "none":
         raise SpecError("cage.model", base.cage.model, "a caged bearing: the skidding balance is the cage's torque "
@@ -88,13 +88,14 @@ def check_grid(base: Spec, loads, temperatures, speeds, clearances=None) -> None
         positive("--speeds", speed)
     for speed in speeds:  # validate every variant before the first solve
         for temperature in temperatures:
-            with_overrides(base, {"drive.speed_rpm": float(speed), "lubricant.temperature": float(temperature)})
+            services.with_overrides(base, {"drive.speed_rpm": float(speed),
+                                           "lubricant.temperature": float(temperature)})
     if clearances is not None and not clearances:
         raise SpecError("--clearances", clearances, "at least one value is needed")
     for clearance in clearances or ():
         finite("--clearances", clearance)
         try:  # the spec's fit checks and the builder's (a raceway must not overlap what it should not)
-            build_scene(with_overrides(base, clearance_overrides(base, clearance)))
+            services.build_scene(services.with_overrides(base, clearance_overrides(base, clearance)))
         except SpecError as error:
             raise SpecError("--clearances", clearance, f"a diametral clearance [m] this bearing accepts: {error}") \
                 from None
@@ -108,7 +109,7 @@ def clearance_overrides(base: Spec, clearance: float) -> dict:
             "bearing.pitch_diameter": base.bearing.pitch, "bearing.diametral_clearance": float(clearance)}
 
 
-def point(base: Spec, speed: float, temperature: float, load: float,
+def point(services: StudyServices, base: Spec, speed: float, temperature: float, load: float,
           clearance: float | None = None) -> tuple[dict, SkiddingSolution | None]:
     """One row of the map and its solution (None where the balance has no solution; the row says why).
     ``clearance``: the diametral clearance [m], or None for the base's own."""
@@ -116,12 +117,12 @@ def point(base: Spec, speed: float, temperature: float, load: float,
                  "load.radial": float(load)}
     if clearance is not None:
         overrides.update(clearance_overrides(base, clearance))
-    spec = with_overrides(base, overrides)
+    spec = services.with_overrides(base, overrides)
     row = {"speed_rpm": speed, "temperature": temperature, "clearance": round(spec.bearing.clearance, PICOMETRE_DIGITS),
            "radial_load": load, "total_load": total_radial_load(spec), "message": "", "checks": []}
     start = time.perf_counter()
     try:
-        scene = build_scene(spec)
+        scene = services.build_scene(spec)
         solution = solve_skidding(scene)
     except (ArithmeticError, SpecError) as error:
         log.warning("no skidding balance at %g rpm, %g °C, %g N: %s", speed, temperature, load, error)
@@ -154,19 +155,19 @@ def _largest(values: np.ndarray) -> float:
     return float(values.max()) if values.size else 0.0
 
 
-def run(base: Spec, directory: str | Path, loads, temperatures, speeds, minimum_load=None, figures: bool = True,
-        progress: ProgressMeter | None = None, clearances=None) -> list[dict]:
+def run(services: StudyServices, base: Spec, directory: str | Path, loads, temperatures, speeds, minimum_load=None,
+        figures: bool = True, progress: ProgressMeter | None = None, clearances=None) -> list[dict]:
     """Solve every point, write the outputs into ``directory`` and return the rows. ``minimum_load``: the
     catalogue minimum-load band (low, high) [N] to mark, or None. ``clearances``: diametral clearances [m], or None
     for the base's own."""
-    check_grid(base, loads, temperatures, speeds, clearances)
+    check_grid(services, base, loads, temperatures, speeds, clearances)
     progress = progress or ProgressMeter()
     clearances = tuple(clearances) if clearances is not None else (None,)
     grid = [(c, s, t, f) for c in clearances for s in speeds for t in temperatures for f in loads]
     rows, profiles = [], {}
     for k, (clearance, speed, temperature, load) in enumerate(grid):
         progress.next_run(k + 1, len(grid))
-        row, solution = point(base, speed, temperature, load, clearance)
+        row, solution = point(services, base, speed, temperature, load, clearance)
         rows.append(row)
         if solution is not None and (clearance, speed, temperature) == (clearances[0], speeds[0], temperatures[0]):
             profiles[load] = solution

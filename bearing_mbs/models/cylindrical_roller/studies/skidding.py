@@ -17,12 +17,12 @@ At light load the cage and rollers approach it with a time constant of the order
 weak), so a short run reads less slip; compare the window halves.
 
 The penalty cage's slip averaged over a window of duration T is only resolved to about
-:func:`~bearing_mbs.studies.settling.pocket_play_resolution`: the cage may shift by the pocket clearance H relative
+:func:`.settling.pocket_play_resolution`: the cage may shift by the pocket clearance H relative
 to the rollers, an angle of about 2H/(D_pw/2), whatever the true slip. The constraint cage has no play
 (resolution 0).
 
 Each row carries its run's ``status`` and ``checks`` (docs/status.md) with the ``window_settled`` check
-(:mod:`bearing_mbs.studies.settling`): a window whose cage slip has not settled makes its run ``suspect``. The
+(:mod:`.settling`): a window whose cage slip has not settled makes its run ``suspect``. The
 study's status is its worst run's (:func:`study_status`).
 """
 
@@ -39,12 +39,12 @@ from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.status import failed_check_names, worst_status
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.name import MODEL_NAME
 from bearing_mbs.models.cylindrical_roller.steady_skidding import solve_skidding
-from bearing_mbs.runner import run_spec, summarize
+from bearing_mbs.models.cylindrical_roller.studies.settling import pocket_play_resolution, window_halves, window_settled
+from bearing_mbs.models.protocol import StudyServices
 from bearing_mbs.spec import Spec, SpecError
 from bearing_mbs.spec.fields import positive
-from bearing_mbs.studies.common import with_overrides
-from bearing_mbs.studies.settling import pocket_play_resolution, window_halves, window_settled
 
 log = logging.getLogger(__name__)
 
@@ -65,7 +65,7 @@ COLUMNS = ("cage_model", "radial_load", "total_load", "load_fraction", "cage_sli
 
 def check_base(base: Spec, loads) -> None:
     """Raise :class:`SpecError` unless ``base`` is a bearing scenario and every load [N] is positive."""
-    if base.scenario.model != "bearing":
+    if base.scenario.model != MODEL_NAME:
         raise SpecError("scenario.model", base.scenario.model, "the skidding sweep varies a bearing scenario")
     if not loads:
         raise SpecError("loads", loads, "at least one radial load is needed")
@@ -73,7 +73,8 @@ def check_base(base: Spec, loads) -> None:
         positive("loads", load)
 
 
-def sweep_loads(base: Spec, loads=LOADS, progress: ProgressMeter | None = None, counted=(0, 0)) -> list[dict]:
+def sweep_loads(services: StudyServices, base: Spec, loads=LOADS, progress: ProgressMeter | None = None,
+                counted=(0, 0)) -> list[dict]:
     """Run ``base`` at each radial load of ``loads`` [N] with its own cage model; one row per load (keys:
     :data:`COLUMNS`): loads [N], cage slip (window mean and its two halves) [-], the resolution of the window
     [-], largest inner-raceway slip ratio [-], largest roller and pocket force [N], largest cage eccentricity
@@ -84,34 +85,34 @@ def sweep_loads(base: Spec, loads=LOADS, progress: ProgressMeter | None = None, 
     before, total = counted if counted[1] else (0, len(loads))
     rows = []
     for k, load in enumerate(loads):
-        spec = with_overrides(base, {"load.radial": float(load)})
+        spec = services.with_overrides(base, {"load.radial": float(load)})
         progress.next_run(before + k + 1, total)
-        scene, result = run_spec(spec, progress)
-        rows.append(sweep_row(spec, scene, result, base.load.radial))
+        scene, result = services.run_spec(spec, progress)
+        rows.append(sweep_row(services, spec, scene, result, base.load.radial))
         log.info("%s cage, %g N: cage slip %.4g (%s)", spec.cage.model, load, rows[-1]["cage_slip"],
                  rows[-1]["status"])
     return rows
 
 
-def sweep(base: Spec, loads=LOADS, cages: dict[str, dict] | None = None,
+def sweep(services: StudyServices, base: Spec, loads=LOADS, cages: dict[str, dict] | None = None,
           progress: ProgressMeter | None = None) -> dict[str, list[dict]]:
     """:func:`sweep_loads` for each cage model of ``cages`` (name -> fields that select it; default
     :data:`CAGES`): {cage model: rows}."""
     cages = CAGES if cages is None else cages
     check_base(base, loads)
-    variants = {name: with_overrides(base, selection) for name, selection in cages.items()}  # validated first
+    variants = {name: services.with_overrides(base, selection) for name, selection in cages.items()}  # validated first
     total = len(variants) * len(loads)
-    return {name: sweep_loads(spec, loads, progress, (k * len(loads), total))
+    return {name: sweep_loads(services, spec, loads, progress, (k * len(loads), total))
             for k, (name, spec) in enumerate(variants.items())}
 
 
-def sweep_row(spec: Spec, scene, result, nominal_load: float) -> dict:
+def sweep_row(services: StudyServices, spec: Spec, scene, result, nominal_load: float) -> dict:
     """One row of the sweep (see :func:`sweep_loads`); the run's checks get ``window_settled`` (a run that stopped
     early has no checks: its failure says why)."""
     settled = window_settled(spec, scene, result) if result.completed else None
     if settled is not None:
         result.checks = (*result.checks, settled)
-    summary = summarize(spec, scene, result)
+    summary = services.summarize(spec, scene, result)
     first, second, duration = window_halves(spec, scene, result)
     return {
         "cage_model": spec.cage.model,
@@ -277,11 +278,11 @@ def write(sweeps: dict[str, list[dict]], directory: str | Path, title: str = "",
     return paths
 
 
-def run(base: Spec, directory: str | Path, loads=LOADS, cages: dict[str, dict] | None = None,
+def run(services: StudyServices, base: Spec, directory: str | Path, loads=LOADS, cages: dict[str, dict] | None = None,
         figures: bool = True, progress: ProgressMeter | None = None) -> dict[str, list[dict]]:
     """:func:`sweep` the base scenario, then :func:`write` the outputs into ``directory``; returns the rows
     by cage model. Rows that did not settle or carry warnings are logged."""
-    sweeps = sweep(base, loads, cages, progress)
+    sweeps = sweep(services, base, loads, cages, progress)
     title = (f"{base.scenario.name}: {base.drive.speed_rpm:g} rpm, cage guidance "
              f"{base.bearing.cage_guidance}")
     write(sweeps, directory, title, figures)
