@@ -30,9 +30,10 @@ import numpy as np
 from bearing_mbs.contact.ehl import FILM_FORMULAS, reduced_radius
 from bearing_mbs.contact.line_contact import (
     PALMGREN_EXPONENT,
-    STEEL_EFFECTIVE_MODULUS,
-    effective_modulus,
+    STEEL_CONTACT_MODULUS,
+    contact_modulus,
     palmgren_stiffness,
+    reduced_modulus,
 )
 from bearing_mbs.contact.traction import TRACTION_COLUMNS, TRACTION_MODELS
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, OrbitConstraint, PairLaw, Profile, Scene
@@ -275,7 +276,7 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
     if group in ("inner_race", "outer_race"):
         other = bearing.ring_material
     length = bearing.cage_width if group == "land" else geometry.roller_length
-    modulus = effective_modulus(first.youngs_modulus, first.poisson_ratio, other.youngs_modulus, other.poisson_ratio)
+    modulus = contact_modulus(first.youngs_modulus, first.poisson_ratio, other.youngs_modulus, other.poisson_ratio)
     row = ()
     if contact.friction_law == "ehl":  # the spec admits it on the raceways only
         row = traction_row(contact, spec.lubricant, *raceway_line_contact(spec, geometry, group),
@@ -287,23 +288,23 @@ def group_law(spec: Spec, geometry: BearingGeometry, group: str):
             raise SpecError(f"contact.{group}.stiffness_model", "document",
                             "the primary document gives stiffnesses for the raceways only (its KC is '?')")
         return pair_law(contact, stiffness=DOCUMENT_STIFFNESS[group], exponent=DOCUMENT_EXPONENT, traction=row)
-    stiffness = palmgren_stiffness(length) * modulus / STEEL_EFFECTIVE_MODULUS
+    stiffness = palmgren_stiffness(length) * modulus / STEEL_CONTACT_MODULUS
     return pair_law(contact, stiffness=stiffness, exponent=PALMGREN_EXPONENT, traction=row)
 
 
 def raceway_line_contact(spec: Spec, geometry: BearingGeometry, group: str) -> tuple[float, float, float]:
     """(E' [Pa], R [m], l [m]) of a raceway group's line contact ('inner_race' or 'outer_race'): twice the roller's
-    and ring's effective modulus (:func:`~bearing_mbs.contact.line_contact.effective_modulus`), the reduced radius
+    and ring's reduced modulus (:func:`~bearing_mbs.contact.line_contact.reduced_modulus`), the reduced radius
     in the rolling direction (:func:`~bearing_mbs.contact.ehl.reduced_radius`, concave on the outer raceway) and the
     roller's effective length."""
     roller, ring = spec.bearing.roller_material, spec.bearing.ring_material
-    modulus = effective_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus, ring.poisson_ratio)
+    modulus = reduced_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus, ring.poisson_ratio)
     raceway = geometry.inner_race_diameter if group == "inner_race" else geometry.outer_race_diameter
     radius = reduced_radius(raceway / 2, geometry.roller_diameter / 2, group == "outer_race")
-    return 2 * modulus, float(radius), geometry.roller_length
+    return modulus, float(radius), geometry.roller_length
 
 
-def traction_row(contact, lubricant, reduced_modulus: float, radius: float, length: float,
+def traction_row(contact, lubricant, modulus: float, radius: float, length: float,
                  replenishment: float) -> tuple[float, ...]:
     """The lubricated-traction row (:data:`~bearing_mbs.contact.traction.TRACTION_COLUMNS`) of a raceway group:
     its contact settings, the oil at the operating temperature, E' [Pa], the reduced radius R [m], the contact
@@ -315,7 +316,7 @@ def traction_row(contact, lubricant, reduced_modulus: float, radius: float, leng
         "thermal": float(contact.thermal_reduction), "viscosity": oil.dynamic_viscosity(temperature),
         "pressure_viscosity": lubricant.operating_pressure_viscosity(),
         "temperature_viscosity": oil.temperature_viscosity(temperature),
-        "conductivity": oil.thermal_conductivity, "modulus": reduced_modulus, "radius": radius, "length": length,
+        "conductivity": oil.thermal_conductivity, "modulus": modulus, "radius": radius, "length": length,
         "roughness": contact.roughness, "eyring_stress": contact.eyring_stress, "shear_modulus": contact.shear_modulus,
         "limiting_shear": contact.limiting_shear_coefficient,
         "rolling_resistance": float(contact.ehl_rolling_resistance),

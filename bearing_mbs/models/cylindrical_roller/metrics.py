@@ -82,7 +82,7 @@ class LineContact(NamedTuple):
     """The Hertz line contact of a roller on a raceway: reduced modulus E' = 2/[(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] [Pa],
     reduced radius R [m] in the rolling direction and length l [m]."""
 
-    modulus: float
+    reduced_modulus: float
     radius: float
     length: float
 
@@ -103,7 +103,7 @@ def frictional_power_intensity(traction, sliding, load, contact: LineContact) ->
     speed Δu [m/s] (arrays of one shape); 0 where Q <= 0 (no contact)."""
     traction, sliding, load = np.broadcast_arrays(*(np.asarray(x, float) for x in (traction, sliding, load)))
     touching = load > 0
-    half_width = hertz_half_width(np.where(touching, load, 1.0) / contact.length, contact.radius, contact.modulus)
+    half_width = hertz_half_width(np.where(touching, load, 1.0) / contact.length, contact.radius, contact.reduced_modulus)
     return np.where(touching, np.abs(traction * sliding) / (2 * half_width * contact.length), 0.0)
 
 
