@@ -30,6 +30,7 @@ import numpy as np
 
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.result import Result
+from bearing_mbs.core.topology import Group
 from bearing_mbs.engines import check_supported, simulate
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.io.json import write_json
@@ -86,14 +87,14 @@ def errors(spec: Spec, scene, result: Result, reference: Result) -> dict:
 
         cage_run, cage_ref = skidding.cage_speed(scene, run)[mask], skidding.cage_speed(scene, reference)[mask]
         norms["cage_speed"] = float(abs(cage_run.mean() - cage_ref.mean()) / abs(cage_ref.mean()))
-        inner = skidding.pair_columns(scene, "inner_race")
+        inner = skidding.pair_columns(scene, Group.INNER_RACE)
         loads_run = run.pair_series("normal_force")[mask][:, inner]
         loads_ref = reference.pair_series("normal_force")[mask][:, inner]
         norms["roller_loads"] = float(np.abs(loads_run - loads_ref).max() / loads_ref.max())
         fraction = spec.analysis.load_fraction
         slips = [np.abs(skidding.slip_ratios(scene, run, race, fraction)[mask]
                         - skidding.slip_ratios(scene, reference, race, fraction)[mask])
-                 for race in ("inner_race", "outer_race")]
+                 for race in (Group.INNER_RACE, Group.OUTER_RACE)]
         both = np.concatenate([s.ravel() for s in slips])
         norms["slips"] = float(np.nanmax(both)) if np.isfinite(both).any() else float("nan")
     return norms
@@ -106,7 +107,7 @@ def largest_slip(spec: Spec, scene, result: Result) -> float:
 
     mask = window_mask(spec, result.time)
     fraction = spec.analysis.load_fraction
-    slips = [np.abs(skidding.slip_ratios(scene, result, race, fraction)[mask]) for race in ("inner_race", "outer_race")]
+    slips = [np.abs(skidding.slip_ratios(scene, result, race, fraction)[mask]) for race in (Group.INNER_RACE, Group.OUTER_RACE)]
     both = np.concatenate([s.ravel() for s in slips])
     return float(np.nanmax(both)) if np.isfinite(both).any() else 0.0
 

@@ -6,10 +6,11 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from bearing_mbs.core.topology import Group
 from bearing_mbs.spec import Spec
 
-CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
-FORCE_GROUPS = ("inner_race", "outer_race", "pocket")  # the groups whose stiffness a case scales
+CONTACT_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.LAND, Group.ROLLER)
+FORCE_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET)  # the groups whose stiffness a case scales
 
 
 @dataclass(frozen=True)
