@@ -462,7 +462,9 @@ class LubricantSpec:
                     f"adds to the churning drag: needs model = 'churning', not {self.model!r}")
 
     def lubricant(self) -> Lubricant | None:
-        """The oil (a preset with this table's values over it), or None if the table names none."""
+        """The oil (a preset with this table's values over it), or None if the table names none; the build carries
+        it to the operating temperature once (:func:`~bearing_mbs.models.cylindrical_roller.operating_oil.
+        operating_oil`)."""
         if self.oil is None and self.viscosity_40 is None:
             return None
         own = {name: getattr(self, name) for name in ("viscosity_40", "viscosity_100", "density_15",
@@ -475,22 +477,6 @@ class LubricantSpec:
             return Lubricant("custom oil", **own, source="the scenario's [lubricant]")
         except LubricantError as error:
             raise SpecError(error.field, error.value, error.allowed) from None
-
-    def operating_pressure_viscosity(self) -> float:
-        """α [1/Pa] at the operating temperature, by ``pressure_viscosity_model``."""
-        oil = self.lubricant()
-        if self.pressure_viscosity_model == "roelands":
-            return oil.pressure_viscosity_at(self.temperature)
-        return oil.pressure_viscosity
-
-    def operating_viscosity(self) -> float:
-        """Kinematic viscosity [m²/s] for Palmgren's M_0: given, else the oil's at the temperature, else 32e-6."""
-        if self.viscosity is not None:
-            return self.viscosity
-        oil = self.lubricant()
-        if oil is not None and self.temperature is not None:
-            return oil.kinematic_viscosity(self.temperature)
-        return 32e-6
 
 
 @dataclass(frozen=True)
