@@ -59,15 +59,14 @@ from bearing_mbs.models.cylindrical_roller.lubrication import (
     spin_drag_coefficient,
 )
 from bearing_mbs.models.cylindrical_roller.operating_oil import OperatingOil, operating_oil
+from bearing_mbs.models.cylindrical_roller.spec import CONTACT_GROUPS
 from bearing_mbs.spec import Spec, SpecError
 
 #: The primary document's raceway laws K δ^1.3 (annex II: KI, KE, NI = NE).
 DOCUMENT_STIFFNESS = {Group.INNER_RACE: 3e10, Group.OUTER_RACE: 4e10}
 DOCUMENT_EXPONENT = 1.3
-#: The contact groups with a law of their own (``[contact.<group>]``).
-LAW_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.LAND, Group.ROLLER)
 #: The contact groups in the order of the topology.
-CONTACT_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.POCKET_FILM, Group.ROLLER, Group.LAND)
+TOPOLOGY_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.POCKET_FILM, Group.ROLLER, Group.LAND)
 
 INNER_RING, CAGE = 0, 1
 
@@ -126,12 +125,12 @@ def rolling_set(spec: Spec, geometry: BearingGeometry, ring_inertia: float, cage
 def contacts(spec: Spec, geometry: BearingGeometry, oil: OperatingOil, caged: bool):
     """(pairs, orbit constraints, pair indices by group): per roller its two raceway pairs, then by cage model its
     pocket pairs, orbit constraint or roller–roller pair, then its pocket films; last the cage's land pair."""
-    laws = {group: group_law(spec, geometry, group, oil) for group in LAW_GROUPS}
+    laws = {group: group_law(spec, geometry, group, oil) for group in CONTACT_GROUPS}
     film_law = pocket_film_law(spec, geometry, oil) if spec.lubricant.pocket_film else None
     raceways, first = geometry.raceways, first_roller(caged)
     r_w = raceways.roller_radius
     pairs, constraints = [], []
-    groups = {group: [] for group in CONTACT_GROUPS}
+    groups = {group: [] for group in TOPOLOGY_GROUPS}
 
     def add(group, pair):
         groups[group].append(len(pairs))

@@ -289,7 +289,7 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
     damping = (ci * np.outer([1, -r], [1, -r]) + co * np.outer([1, r], [1, r])
                + np.diag([drag_linear, ri + ro + drag_angular]))
     rates = np.linalg.eigvals(np.diag([1 / m, 1 / inertia]) @ damping).real
-    modes = [Mode(f"friction, {label}", Role.ROLLERS, 0.0, -float(rate), max(inner_load, outer_load))
+    modes = [Mode(f"friction, {label}", str(Role.ROLLERS), 0.0, -float(rate), max(inner_load, outer_load))
              for rate in sorted(rates, reverse=True) if rate > 0][:1]
 
     def normal(law, load):
@@ -301,7 +301,7 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
     ki, dni = normal(layout.inner_law, inner_load)
     ko, dno = normal(layout.outer_law, outer_load)
     if ki + ko > 0:
-        modes.append(Mode(f"radial contact, {label}", Role.ROLLERS, -(ki + ko) / m, -(dni + dno) / m,
+        modes.append(Mode(f"radial contact, {label}", str(Role.ROLLERS), -(ki + ko) / m, -(dni + dno) / m,
                           max(inner_load, outer_load)))
     return modes
 
@@ -324,4 +324,4 @@ def pocket_film_modes(layout: BearingLayout) -> list[Mode]:
     stiffness = -(load(floor + gap_step, 0.0) - load(floor - gap_step, 0.0)) / (2 * gap_step)
     damping = -(load(floor, rate_step) - load(floor, -rate_step)) / (2 * rate_step)
     mass = layout.roller_mass
-    return [Mode("pocket film, at its floor", Role.ROLLERS, -stiffness / mass, -damping / mass)]
+    return [Mode("pocket film, at its floor", str(Role.ROLLERS), -stiffness / mass, -damping / mass)]

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field, replace
 from bearing_mbs.contact.line_contact import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
 from bearing_mbs.contact.lubricant import PRESETS as LUBRICANTS
 from bearing_mbs.contact.lubricant import Lubricant, LubricantError
+from bearing_mbs.core.topology import Group
 from bearing_mbs.spec import ContactSpec, Spec
 from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, one_of, positive, require
 from bearing_mbs.spec.loading import to_mapping
@@ -551,8 +552,8 @@ class BearingContact:
     roller: ContactSpec = SLIDING
 
 
-#: The contact groups of the bearing model, in the order of :class:`BearingContact`.
-CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
+#: The contact groups of the bearing model with a ``[contact.<group>]`` table, in the order of :class:`BearingContact`.
+CONTACT_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.LAND, Group.ROLLER)
 
 
 @dataclass(frozen=True)
@@ -583,7 +584,7 @@ class BearingModelSpec(Spec):
                     f"{capacity:.4g} N of this bearing): beyond it the raceways yield, which the model does not hold")
         for group in CONTACT_GROUPS:
             lubricated = getattr(self.contact, group).friction_law == "ehl"
-            if lubricated and group not in ("inner_race", "outer_race"):
+            if lubricated and group not in (Group.INNER_RACE, Group.OUTER_RACE):
                 raise SpecError(f"contact.{group}.friction_law", "ehl",
                                 "lubricated (EHL line-contact) traction applies to inner_race and outer_race")
             if lubricated and self.lubricant.temperature is None:
