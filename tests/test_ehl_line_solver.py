@@ -26,7 +26,7 @@ import numpy as np
 import pytest
 
 from bearing_mbs.contact import ehl
-from bearing_mbs.contact.line_contact import effective_modulus
+from bearing_mbs.contact.line_contact import reduced_modulus
 from bearing_mbs.contact.lubricant import PRESETS as OILS
 from bearing_mbs.fluid_film.ehl_line import (
     MARTIN,
@@ -59,8 +59,8 @@ def _seed():
     geometry = BearingGeometry.from_spec(spec)
     oil = OILS[scenario["variants"]["lubricated"]["lubricant"]["oil"]]
     steel = spec.ring_material
-    modulus = 2 * effective_modulus(steel.youngs_modulus, steel.poisson_ratio, spec.roller_material.youngs_modulus,
-                                    spec.roller_material.poisson_ratio)  # E' = 2 E*
+    modulus = reduced_modulus(steel.youngs_modulus, steel.poisson_ratio, spec.roller_material.youngs_modulus,
+                              spec.roller_material.poisson_ratio)  # E' = 2 E*
     return scenario, geometry, oil, modulus
 
 
@@ -84,7 +84,7 @@ def seed_contacts() -> dict[str, LineContact]:
                                         ("inner", heaviest))):
             contacts[f"{temperature:.0f}C-{rpm:.0f}rpm-{level}"] = LineContact(
                 speed=speed, load=load / length, viscosity=oil.dynamic_viscosity(temperature),
-                pressure_viscosity=oil.pressure_viscosity, modulus=modulus, radius=float(radius[race]))
+                pressure_viscosity=oil.pressure_viscosity, reduced_modulus=modulus, radius=float(radius[race]))
     return contacts
 
 
@@ -96,7 +96,7 @@ def seed_solutions() -> dict[str, LineContactSolution]:
 def formula_films(contact: LineContact, formula: str) -> tuple[float, float]:
     code = ehl.FILM_FORMULAS.index(formula)
     central, minimum = ehl.film_thickness(code, contact.speed, contact.load, contact.viscosity,
-                                          contact.pressure_viscosity, contact.modulus, contact.radius)
+                                          contact.pressure_viscosity, contact.reduced_modulus, contact.radius)
     return float(central), float(minimum)
 
 
@@ -109,7 +109,7 @@ def test_martins_rigid_isoviscous_film():
     -0.3 % at 40) and 100 nodes per width, the solver's h0 is within 0.3 % of Martin's (measured -0.2 %). The
     last full node is within 5 % of Martin's rupture point (measured 0.460 against 0.4751: the pressure ends as
     (x_c - x)^2, so its last nodes are near zero)."""
-    contact = LineContact(speed=5.0, load=2000.0, viscosity=0.1, pressure_viscosity=0.0, modulus=1e15,
+    contact = LineContact(speed=5.0, load=2000.0, viscosity=0.1, pressure_viscosity=0.0, reduced_modulus=1e15,
                           radius=0.012, compressible=False)
     solution = solve_line_contact(contact, LineSettings(nodes=100, inlet=60))
     martin = MARTIN * contact.viscosity * contact.speed * contact.radius / contact.load
@@ -126,7 +126,7 @@ def test_heavy_load_gives_hertz_pressure(load):
     within 2 % of p_h over |X| <= 0.8, away from the inlet and the outlet spike (measured 0.55 % and 0.33 %),
     and the film is nearly flat there (max/min of H over |X| <= 0.8 below 1.1)."""
     contact = LineContact(speed=1.0 if load == 1.0e6 else 2.0, load=load, viscosity=0.02 if load == 1.0e6 else 0.01,
-                          pressure_viscosity=2.2e-8, modulus=2.2857e11, radius=0.0125)
+                          pressure_viscosity=2.2e-8, reduced_modulus=2.2857e11, radius=0.0125)
     assert contact.moes[0] > 90
     x, pressure, film = solve_line_contact(contact).dimensionless
     core = np.abs(x) <= 0.8
@@ -218,8 +218,8 @@ def test_transition_contacts(seed_solutions, formula):
 
 
 def test_refuses_bad_input():
-    good = {"speed": 5.0, "load": 1e5, "viscosity": 0.1, "pressure_viscosity": 2e-8, "modulus": 2.3e11, "radius": 0.01}
-    for field, value in (("speed", 0.0), ("load", -1.0), ("viscosity", math.nan), ("modulus", math.inf),
+    good = {"speed": 5.0, "load": 1e5, "viscosity": 0.1, "pressure_viscosity": 2e-8, "reduced_modulus": 2.3e11, "radius": 0.01}
+    for field, value in (("speed", 0.0), ("load", -1.0), ("viscosity", math.nan), ("reduced_modulus", math.inf),
                          ("radius", "0.01"), ("pressure_viscosity", -1e-8), ("viscosity_law", "eyring")):
         with pytest.raises(ValueError):
             LineContact(**{**good, field: value})

@@ -20,9 +20,9 @@ import math
 
 import pytest
 
+from bearing_mbs.contact.line_contact import reduced_modulus
 from bearing_mbs.contact.point_contact import (
     ball_groove_curvatures,
-    effective_modulus,
     hertz_approach,
     hertz_contact,
     houpert_contact,
@@ -59,19 +59,19 @@ def test_houpert_reproduces_the_documents_contact_case():
 def test_exact_hertz_for_two_spheres_is_the_closed_form():
     radius, load = 0.01, 1000.0
     sphere = 1 / radius
-    contact = hertz_contact(load, (sphere, sphere, sphere, sphere), effective_modulus(E, NU, E, NU))
+    contact = hertz_contact(load, (sphere, sphere, sphere, sphere), reduced_modulus(E, NU, E, NU))
     star = E / (2 * (1 - NU**2))
     closed = (3 * load * (radius / 2) / (4 * star)) ** (1 / 3)
     assert contact.a == pytest.approx(closed, rel=1e-9) and contact.b == pytest.approx(closed, rel=1e-9)
     assert contact.p_max == pytest.approx(3 * load / (2 * math.pi * closed**2), rel=1e-9)
-    approach = hertz_approach(load, (sphere, sphere, sphere, sphere), effective_modulus(E, NU, E, NU))
+    approach = hertz_approach(load, (sphere, sphere, sphere, sphere), reduced_modulus(E, NU, E, NU))
     assert approach == pytest.approx(closed**2 / (radius / 2), rel=1e-9)  # δ = a²/R (Johnson eq. 4.23)
 
 
 def test_houpert_agrees_with_exact_hertz_in_a_straight_groove():
     load = houpert_load_at_pressure(4200e6, D_W, CONFORMITY)
     houpert = houpert_contact(load, D_W, CONFORMITY, E, NU)
-    hertz = hertz_contact(load, ball_groove_curvatures(D_W, CONFORMITY), effective_modulus(E, NU, E, NU))
+    hertz = hertz_contact(load, ball_groove_curvatures(D_W, CONFORMITY), reduced_modulus(E, NU, E, NU))
     for name in ("a", "b", "p_max"):
         assert getattr(hertz, name) == pytest.approx(getattr(houpert, name), rel=5e-3), name
 
@@ -79,7 +79,7 @@ def test_houpert_agrees_with_exact_hertz_in_a_straight_groove():
 @pytest.mark.parametrize("ring", ["inner", "outer"])
 def test_the_raceway_curvature_is_a_small_correction_at_1_5_m(ring):
     load = houpert_load_at_pressure(4200e6, D_W, CONFORMITY)
-    modulus = effective_modulus(E, NU, E, NU)
+    modulus = reduced_modulus(E, NU, E, NU)
     straight = hertz_contact(load, ball_groove_curvatures(D_W, CONFORMITY), modulus)
     curved = hertz_contact(load, ball_groove_curvatures(D_W, CONFORMITY, 1.5, math.radians(45), ring), modulus)
     assert curved.a == pytest.approx(straight.a, rel=1.5e-2) and curved.b == pytest.approx(straight.b, rel=1.5e-2)

@@ -14,6 +14,7 @@ from bearing_mbs.models import build_scene
 from bearing_mbs.models.cylindrical_roller.build import starvation
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.lubrication import replenishment_factor
+from bearing_mbs.models.cylindrical_roller.operating_oil import operating_oil
 from bearing_mbs.models.loading import load_spec
 
 SCENARIO = "scenarios/seed_hss_steady.toml"
@@ -34,11 +35,12 @@ def test_the_seed_bearing_is_starved_more_in_cold_oil_and_at_speed():
         for rpm in (1000, 1800):
             spec = load_spec(SCENARIO, [f"lubricant.temperature={temperature}", f"drive.speed_rpm={rpm}",
                                         "lubricant.starvation=true"])
-            factors[temperature, rpm] = starvation(spec, BearingGeometry.from_spec(spec.bearing))
+            factors[temperature, rpm] = starvation(spec, BearingGeometry.from_spec(spec.bearing),
+                                                  operating_oil(spec.lubricant))
     assert factors[40, 1800] < factors[40, 1000] < factors[60, 1000] < factors[80, 1000] < 1.0
     assert factors[80, 1800] < factors[80, 1000]
     off = load_spec(SCENARIO, ["lubricant.starvation=false"])
-    assert starvation(off, BearingGeometry.from_spec(off.bearing)) == 1.0
+    assert starvation(off, BearingGeometry.from_spec(off.bearing), operating_oil(off.lubricant)) == 1.0
 
 
 def test_the_factor_scales_the_film_and_the_rolling_force_of_a_raceway_row():
@@ -80,5 +82,5 @@ def test_alpha_over_temperature_is_roelands_initial_slope(oil):
 def test_the_operating_alpha_follows_the_chosen_model():
     constant = load_spec(SCENARIO, ["lubricant.temperature=40"])
     roelands = load_spec(SCENARIO, ["lubricant.temperature=40", "lubricant.pressure_viscosity_model=roelands"])
-    assert constant.lubricant.operating_pressure_viscosity() == 2.2e-8
-    assert roelands.lubricant.operating_pressure_viscosity() == roelands.lubricant.lubricant().pressure_viscosity_at(40)
+    assert operating_oil(constant.lubricant).pressure_viscosity == 2.2e-8
+    assert operating_oil(roelands.lubricant).pressure_viscosity == roelands.lubricant.lubricant().pressure_viscosity_at(40)

@@ -200,15 +200,30 @@ def sliced_contact(approach, tilt, positions, drops, width, coefficient, exponen
 
 
 @register_jitable
-def effective_modulus(youngs_1, poisson_1, youngs_2, poisson_2):
-    r"""Effective modulus :math:`E^* = [(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]^{-1}` [Pa] of two bodies in contact.
+def contact_modulus(youngs_1, poisson_1, youngs_2, poisson_2):
+    r"""Contact modulus :math:`E^* = [(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]^{-1}` [Pa] of two bodies in contact.
+
+    The name and symbol are K. L. Johnson's (*Contact Mechanics*, 1985, eq. 4.22), the modulus of Hertz's dry
+    contact; the EHL theory's reduced modulus is twice it (:func:`reduced_modulus`).
 
     Palmgren's law is a fit for steel on steel. For other pairs (a bronze cage on a steel roller) we scale
     its stiffness by :math:`E^*/E^*_{steel}`: to first order the line-contact approach is inversely
-    proportional to :math:`E^*` (K. L. Johnson, Contact Mechanics, 1985, §5.6), an approximation documented
-    where it is used.
+    proportional to :math:`E^*` (Johnson, §5.6), an approximation documented where it is used.
     """
     return 1.0 / ((1.0 - poisson_1**2) / youngs_1 + (1.0 - poisson_2**2) / youngs_2)
+
+
+@register_jitable
+def reduced_modulus(youngs_1, poisson_1, youngs_2, poisson_2):
+    r"""Reduced modulus :math:`E' = 2E^* = 2/[(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]` [Pa] of two bodies in contact.
+
+    The name and symbol of elastohydrodynamic lubrication (D. Dowson, G. R. Higginson, *Elasto-hydrodynamic
+    Lubrication*, 1966; B. J. Hamrock, *Fundamentals of Fluid Film Lubrication*, 1994, where E′ is called the
+    effective elastic modulus): the film formulas' groups U, G, W and Hertz's half-width as written with E′ (the
+    ball–groove contact of :mod:`bearing_mbs.contact.point_contact` too). Twice :func:`contact_modulus`; the
+    doubling is exact in binary floating point.
+    """
+    return 2.0 * contact_modulus(youngs_1, poisson_1, youngs_2, poisson_2)
 
 
 #: Young's modulus [Pa] of bearing steel (100Cr6), the material of Palmgren's fit.
@@ -216,5 +231,5 @@ STEEL_YOUNGS_MODULUS = 208e9
 #: Poisson's ratio [-] of bearing steel.
 STEEL_POISSON_RATIO = 0.3
 #: :math:`E^*` [Pa] of bearing steel on bearing steel, the reference of Palmgren's fit.
-STEEL_EFFECTIVE_MODULUS = effective_modulus(STEEL_YOUNGS_MODULUS, STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS,
-                                            STEEL_POISSON_RATIO)
+STEEL_CONTACT_MODULUS = contact_modulus(STEEL_YOUNGS_MODULUS, STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS,
+                                        STEEL_POISSON_RATIO)

@@ -44,12 +44,6 @@ class EllipticalContact(NamedTuple):
     p_max: float
 
 
-def effective_modulus(youngs_modulus_1: float, poisson_ratio_1: float, youngs_modulus_2: float,
-                      poisson_ratio_2: float) -> float:
-    """E' [Pa] with 2/E' = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂."""
-    return 2.0 / ((1 - poisson_ratio_1**2) / youngs_modulus_1 + (1 - poisson_ratio_2**2) / youngs_modulus_2)
-
-
 #: The largest ellipse ratio a/b :func:`ellipse_ratio` resolves (1 − F(ρ) ≈ 1e-29 there).
 MAX_ELLIPSE_RATIO = 1e15
 
@@ -73,7 +67,8 @@ def ellipse_ratio(curvature_difference: float) -> float:
 
 def hertz_contact(load: float, curvatures: tuple[float, float, float, float], modulus: float) -> EllipticalContact:
     """The exact Hertz contact under ``load`` [N] of two bodies with principal curvatures (ρ₁I, ρ₁II, ρ₂I, ρ₂II)
-    [1/m] (convex > 0) and effective modulus E' [Pa] (:func:`effective_modulus`)."""
+    [1/m] (convex > 0) and reduced modulus E' [Pa]
+    (:func:`~bearing_mbs.contact.line_contact.reduced_modulus`)."""
     r1i, r1ii, r2i, r2ii = curvatures
     total = r1i + r1ii + r2i + r2ii
     if not total > 0:

@@ -4,14 +4,45 @@ A builder fills a :class:`Topology` with named index arrays (body *roles* and pa
 the scene and the result, so analysis, the step advisor, figures and studies find the inner ring, the cage, the
 rollers and the raceway pairs by index, never by matching names. A group's array may have more than one axis
 (the bearing's pockets are (Z, 4): four pocket edges per roller), and rows then follow the roller order.
+
+The names are typed constants: :class:`Role` for bodies, :class:`Group` for pairs. They are string enums, so a
+topology written to JSON and read back, or a key spelled as text, is the same key; a misspelt member fails at
+import, where a misspelt string would find nothing. They live here, in the core, so that a study or an engine can
+name a role without importing a model's package. The built-in models' roles are listed; a :class:`Topology` takes
+any string, so a model added from outside names its own.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from enum import StrEnum
 
 import numpy as np
+
+
+class Role(StrEnum):
+    """Body roles of the models' topologies."""
+
+    INNER_RING = "inner_ring"  # the roller bearing's driven inner ring
+    CAGE = "cage"
+    ROLLERS = "rollers"  # the roller bearing's Z rollers, in roller order
+    BALLS = "balls"  # the balls model's free balls
+    ROTOR = "rotor"  # the rotor model's journal
+    BLADE_ROOT = "blade_root"  # the slewing-bearing pitch model's blade root
+
+
+class Group(StrEnum):
+    """Contact-pair groups of the models' topologies."""
+
+    INNER_RACE = "inner_race"  # roller on the inner raceway, one per roller
+    OUTER_RACE = "outer_race"  # roller on the outer raceway, one per roller
+    POCKET = "pocket"  # roller on its pocket's edges, (Z, 4)
+    POCKET_FILM = "pocket_film"  # roller on its pocket walls' oil films, (Z, 2)
+    ROLLER = "roller"  # neighbouring rollers of a full-complement bearing
+    LAND = "land"  # the cage on its guiding land
+    WALL = "wall"  # the balls model's ball on a wall
+    BALL = "ball"  # the balls model's ball on ball
 
 
 def _frozen(arrays: Mapping) -> dict[str, np.ndarray]:
@@ -19,7 +50,7 @@ def _frozen(arrays: Mapping) -> dict[str, np.ndarray]:
     for name, indices in arrays.items():
         array = np.array(indices, dtype=np.int64)
         array.setflags(write=False)
-        frozen[name] = array
+        frozen[str(name)] = array
     return frozen
 
 

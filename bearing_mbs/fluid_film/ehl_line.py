@@ -108,21 +108,22 @@ class LineContactNotConverged(RuntimeError):
 @dataclass(frozen=True)
 class LineContact:
     """The contact: entrainment ``speed`` u [m/s] > 0 (mean of the two surfaces), ``load`` w per unit length [N/m]
-    > 0, ``viscosity`` η0 [Pa s] > 0 at ambient pressure, ``pressure_viscosity`` α [1/Pa] >= 0, reduced
-    ``modulus`` E' [Pa] > 0, reduced ``radius`` R [m] > 0, ``viscosity_law`` in :data:`VISCOSITY_LAWS` and
-    ``compressible`` (Dowson–Higginson density, else ρ = ρ0)."""
+    > 0, ``viscosity`` η0 [Pa s] > 0 at ambient pressure, ``pressure_viscosity`` α [1/Pa] >= 0,
+    ``reduced_modulus`` E' [Pa] > 0 (:func:`~bearing_mbs.contact.line_contact.reduced_modulus`), reduced ``radius``
+    R [m] > 0, ``viscosity_law`` in :data:`VISCOSITY_LAWS` and ``compressible`` (Dowson–Higginson density, else
+    ρ = ρ0)."""
 
     speed: float
     load: float
     viscosity: float
     pressure_viscosity: float
-    modulus: float
+    reduced_modulus: float
     radius: float
     viscosity_law: str = "roelands"
     compressible: bool = True
 
     def __post_init__(self):
-        for name in ("speed", "load", "viscosity", "modulus", "radius"):
+        for name in ("speed", "load", "viscosity", "reduced_modulus", "radius"):
             _require(name, getattr(self, name), lambda v: v > 0, "a finite number > 0")
         _require("pressure_viscosity", self.pressure_viscosity, lambda v: 0 <= v < 1e-6,
                  "a finite number in [0, 1e-6) 1/Pa")
@@ -134,18 +135,18 @@ class LineContact:
     @property
     def half_width(self) -> float:
         """Hertz's b = (8wR/πE')^(1/2) [m]."""
-        return math.sqrt(8 * self.load * self.radius / (math.pi * self.modulus))
+        return math.sqrt(8 * self.load * self.radius / (math.pi * self.reduced_modulus))
 
     @property
     def hertz_pressure(self) -> float:
         """Hertz's p_h = (wE'/2πR)^(1/2) [Pa]."""
-        return math.sqrt(self.load * self.modulus / (2 * math.pi * self.radius))
+        return math.sqrt(self.load * self.reduced_modulus / (2 * math.pi * self.radius))
 
     @property
     def groups(self) -> tuple[float, float, float]:
         """(U, G, W) = (η0 u/E'R, αE', w/E'R) [-]."""
-        scale = self.modulus * self.radius
-        return self.viscosity * self.speed / scale, self.pressure_viscosity * self.modulus, self.load / scale
+        scale = self.reduced_modulus * self.radius
+        return self.viscosity * self.speed / scale, self.pressure_viscosity * self.reduced_modulus, self.load / scale
 
     @property
     def moes(self) -> tuple[float, float]:

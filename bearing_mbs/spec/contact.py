@@ -21,7 +21,7 @@ class ContactSpec:
 
     normal_law: one of ``power``, ``lankarani_nikravesh``, ``hunt_crossley``, ``flores``, ``gonthier``.
     stiffness_model: ``given`` (use stiffness and exponent), ``palmgren`` (line contact of the bearing's
-    contact length, n = 10/9, scaled by the pair's effective modulus) or ``document`` (the primary document's
+    contact length, n = 10/9, scaled by the pair's contact modulus E*) or ``document`` (the primary document's
     K δ^1.3 with K = 3e10 inner, 4e10 outer; raceways only). Only ``given`` applies to the balls model.
     stiffness: K [N/m^n] > 0 (default 6e6). exponent: n [-] in [1, 3] (default 1.5, Hertz point contact; 10/9
     Palmgren line contact). Both only with ``given``: the other models set them, and a value given with them is

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 from bearing_mbs.core.scene import GROUND, Body, ContactPair, DistanceConstraint, Scene
-from bearing_mbs.core.topology import Topology
+from bearing_mbs.core.topology import Group, Role, Topology
 from bearing_mbs.models.balls.spec import COORDINATES
 from bearing_mbs.models.building import pair_law, reject_initial_overlap
 from bearing_mbs.spec import Spec
@@ -50,11 +50,11 @@ def build_balls_scene(spec: Spec) -> Scene:
         if box.right_wall is not None:
             walls.append(("right_wall", (box.right_wall, 0.0), (-1.0, 0.0)))
 
-    pairs, blame, groups = [], [], {"wall": [], "ball": []}
+    pairs, blame, groups = [], [], {Group.WALL: [], Group.BALL: []}
     wall_law, ball_law = pair_law(spec.contact.wall), pair_law(spec.contact.ball)
     for i, ball in enumerate(spec.balls):
         for wall, point, normal in walls:
-            groups["wall"].append(len(pairs))
+            groups[Group.WALL].append(len(pairs))
             pairs.append(
                 ContactPair(
                     f"{bodies[i].name}-{wall}", "circle_line", GROUND, i, wall_law,
@@ -67,7 +67,7 @@ def build_balls_scene(spec: Spec) -> Scene:
         for j in range(i + 1, len(spec.balls)):
             if lengths.get((i, j), 0.0) >= spec.balls[i].radius + spec.balls[j].radius:
                 continue  # the constraint keeps them apart: the pair could never touch
-            groups["ball"].append(len(pairs))
+            groups[Group.BALL].append(len(pairs))
             pairs.append(
                 ContactPair(
                     f"{bodies[i].name}-{bodies[j].name}", "circle_circle", i, j, ball_law,
@@ -87,7 +87,7 @@ def build_balls_scene(spec: Spec) -> Scene:
         pairs=tuple(pairs),
         constraints=tuple(constraints),
         gravity=(0.0, -spec.scenario.gravity),
-        topology=Topology(bodies={"balls": range(len(bodies))}, pairs=groups),
+        topology=Topology(bodies={Role.BALLS: range(len(bodies))}, pairs=groups),
     )
     reject_initial_overlap(scene, lambda k: blame[k])
     return scene

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.topology import Group, Role
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.metrics import (
@@ -94,7 +95,7 @@ def plot_roller_loads(spec, scene, result):
     """Inner-raceway roller load [N] against orbital angle [deg] over the analysis window."""
     mask = window(spec, result)
     angles = np.degrees(roller_orbit_angles(scene, result)[mask]).ravel()
-    forces = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].ravel()
+    forces = result.pair_series("normal_force")[mask][:, pair_columns(scene, Group.INNER_RACE)].ravel()
     centres, means = load_distribution(scene, result, mask, 2 * roller_indices(scene).size)
     figure, axis = new_figure(figsize=(7.0, 4.0))
     axis.plot(angles, forces, ".", color="C0", alpha=0.08, markersize=2, label="samples")
@@ -112,7 +113,7 @@ def plot_roller_loads(spec, scene, result):
 
 def plot_slip_map(spec, scene, result):
     """Inner-raceway slip ratio [-] of each roller against time: diverging colours, blank where unloaded."""
-    ratios = slip_ratios(scene, result, "inner_race", spec.analysis.load_fraction)
+    ratios = slip_ratios(scene, result, Group.INNER_RACE, spec.analysis.load_fraction)
     finite = np.abs(ratios[np.isfinite(ratios)])
     limit = float(np.percentile(finite, SLIP_MAP_PERCENTILE)) if finite.size else 1.0
     limit = limit if limit > 0 else 1.0
@@ -164,9 +165,9 @@ def animate(spec, scene, result, path, frames: int = 120, fps: int = 20) -> Path
     geometry = BearingGeometry.from_spec(spec.bearing)
     instants = np.unique(np.linspace(0, result.time.size - 1, max(int(frames), 1)).round().astype(int))
     rollers = roller_indices(scene)
-    loads = result.pair_series("normal_force")[:, pair_columns(scene, "inner_race")]
+    loads = result.pair_series("normal_force")[:, pair_columns(scene, Group.INNER_RACE)]
     colours = ScalarMappable(Normalize(0.0, max(float(loads[window(spec, result)].max()), 1e-300)), "viridis")
-    cage = scene.topology.body("cage") if scene.topology.has("cage") else None
+    cage = scene.topology.body(Role.CAGE) if scene.topology.has(Role.CAGE) else None
     r_w, r_i = geometry.roller_diameter / 2, geometry.inner_race_diameter / 2
 
     figure, axis = new_figure(figsize=(5.0, 5.4))

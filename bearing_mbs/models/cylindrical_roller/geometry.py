@@ -30,11 +30,57 @@ import numpy as np
 
 from bearing_mbs.models.cylindrical_roller.spec import (
     BearingSpec,
+    diametral_clearance,
     inner_race_diameter,
     outer_race_diameter,
     pocket_angle_cosine,
 )
 from bearing_mbs.spec import SpecError
+
+
+@dataclass(frozen=True)
+class RacewayLayout:
+    """The rolling set as its raceway contacts hold it: ``rollers`` Z rollers of radius ``roller_radius`` r between
+    the inner and outer raceways of radii ``inner_radius`` r_i and ``outer_radius`` r_o [m].
+
+    The one layout of the bearing: :attr:`BearingGeometry.raceways` gives it to the builder, which sets the raceway
+    pairs' radii from it, and whatever reads a built scene (the linearisation, the skidding balance) recovers the
+    same numbers from those pairs (:meth:`of_pairs`) instead of deriving them again.
+    """
+
+    rollers: int
+    roller_radius: float
+    inner_radius: float
+    outer_radius: float
+
+    @classmethod
+    def of_pairs(cls, rollers: int, inner_pair, outer_pair) -> RacewayLayout:
+        """The layout of a scene from a roller's inner-raceway pair (roller b on ring a) and outer-raceway pair."""
+        return cls(rollers, inner_pair.radius_b, inner_pair.radius_a, outer_pair.radius_a)
+
+    @property
+    def roller_diameter(self) -> float:
+        """D_w = 2r [m]."""
+        return 2 * self.roller_radius
+
+    @property
+    def pitch_diameter(self) -> float:
+        """D_pw [m]: the mean of the raceway diameters, r_i + r_o."""
+        return self.inner_radius + self.outer_radius
+
+    @property
+    def clearance(self) -> float:
+        """Diametral clearance P_d [m] (negative: preload), :func:`.spec.diametral_clearance`."""
+        return diametral_clearance(2 * self.inner_radius, 2 * self.outer_radius, self.roller_diameter)
+
+    def epicyclic_cage_speed(self, inner_speed):
+        """ω_c [rad/s] at inner-ring speed ω_i, see :func:`epicyclic_cage_speed`."""
+        return epicyclic_cage_speed(inner_speed, self.roller_diameter, self.pitch_diameter)
+
+    def epicyclic_spin_in_cage(self, inner_speed):
+        """The rollers' spin relative to the cage [rad/s], −(ω_i − ω_c) r_i/r at the epicyclic ω_c: rolling
+        without slip on both raceways."""
+        return -(inner_speed - self.epicyclic_cage_speed(inner_speed)) * self.inner_radius / self.roller_radius
 
 
 @dataclass(frozen=True)
@@ -110,6 +156,12 @@ class BearingGeometry:
             cage_outer_radius=r_out,
             outer_land_radius=r_out + land / 2,
         )
+
+    @property
+    def raceways(self) -> RacewayLayout:
+        """The rolling set's layout between the raceways (:class:`RacewayLayout`)."""
+        return RacewayLayout(self.rollers, self.roller_diameter / 2, self.inner_race_diameter / 2,
+                             self.outer_race_diameter / 2)
 
     @property
     def roller_angles(self) -> np.ndarray:

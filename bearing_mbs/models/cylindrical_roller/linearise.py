@@ -64,11 +64,11 @@ from bearing_mbs.contact.friction import ZERO_SLIP_SLOPE
 from bearing_mbs.contact.line_contact import power_law_stiffness
 from bearing_mbs.contact.traction import zero_slip_slope
 from bearing_mbs.core.scene import Scene
+from bearing_mbs.core.topology import Group, Role
 from bearing_mbs.elements import Drag, Load, VelocityServo
 from bearing_mbs.fluid_film.cylinder_plane import film_forces
-from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed, roller_centrifugal_force
+from bearing_mbs.models.cylindrical_roller.geometry import RacewayLayout, roller_centrifugal_force
 from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, solve_radial
-from bearing_mbs.models.cylindrical_roller.spec import diametral_clearance
 from bearing_mbs.models.cylindrical_roller.stiffness import carried_load
 
 
@@ -118,9 +118,10 @@ def linearise(scene: Scene) -> Linearisation | None:
 
 @dataclass(frozen=True)
 class BearingLayout:
-    """What the linearisation reads from a bearing scene: geometry [m], masses [kg], inertias [kg m²], raceway
-    laws, servo gain [N m s], highest ring speed [rad/s], initial orbit speed [rad/s], roller drag (linear
-    [N s/m], angular [N m s]) and lowest ring speed [rad/s]."""
+    """What the linearisation reads from a bearing scene: the raceways' layout (:class:`~.geometry.RacewayLayout`,
+    from the raceway pairs' radii), masses [kg], inertias [kg m²], raceway laws, servo gain [N m s], highest ring
+    speed [rad/s], initial orbit speed [rad/s], roller drag (linear [N s/m], angular [N m s]) and lowest ring speed
+    [rad/s]."""
 
     scene: Scene
     ring: int
@@ -130,9 +131,7 @@ class BearingLayout:
     rollers: tuple[int, ...]
     roller_mass: float
     roller_inertia: float
-    roller_radius: float
-    inner_radius: float
-    outer_radius: float
+    raceways: RacewayLayout
     inner_law: object
     outer_law: object
     servo_gain: float
@@ -144,10 +143,10 @@ class BearingLayout:
     @classmethod
     def of(cls, scene: Scene) -> BearingLayout | None:
         topology = scene.topology
-        inner, outer = topology.group("inner_race"), topology.group("outer_race")
-        if not topology.has("inner_ring") or inner.size == 0 or inner.size != outer.size:
+        inner, outer = topology.group(Group.INNER_RACE), topology.group(Group.OUTER_RACE)
+        if not topology.has(Role.INNER_RING) or inner.size == 0 or inner.size != outer.size:
             return None
-        ring = topology.body("inner_ring")
+        ring = topology.body(Role.INNER_RING)
         inner_pairs = [scene.pairs[k] for k in inner.ravel()]
         outer_pair = scene.pairs[int(outer.ravel()[0])]
         if inner_pairs[0].kind != "circle_circle" or any(p.body_a != ring for p in inner_pairs):
@@ -163,38 +162,28 @@ class BearingLayout:
         orbit_speed = abs(orbit) * math.hypot(x, y)
         drag = (sum(d.linear + 2 * d.quadratic * orbit_speed for d in drags), sum(d.angular for d in drags))
         return cls(scene, ring, ring_body.name, ring_body.mass, ring_body.inertia, rollers, roller.mass,
-                   roller.inertia, inner_pairs[0].radius_b, inner_pairs[0].radius_a, outer_pair.radius_a,
+                   roller.inertia, RacewayLayout.of_pairs(len(rollers), inner_pairs[0], outer_pair),
                    inner_pairs[0].law, outer_pair.law, sum(d.gain for d in servos), max(speeds), abs(orbit), drag,
                    min(speeds))
-
-    @property
-    def pitch_diameter(self) -> float:
-        """D_pw [m]: the mean of the raceway diameters."""
-        return self.inner_radius + self.outer_radius
 
     def rolling_speeds(self) -> tuple[float, float]:
         """The raceways' slowest and fastest rolling speeds [m/s] of the run, (ω_i − ω_c) r_i at its lowest and
         highest ring speed with the cage at its epicyclic speed."""
         speeds = (self.lowest_speed, self.shaft_speed)
-        return tuple(float((w - epicyclic_cage_speed(w, 2 * self.roller_radius, self.pitch_diameter))
-                           * self.inner_radius) for w in speeds)
-
-    @property
-    def clearance(self) -> float:
-        """Diametral clearance P_d [m] (negative: preload)."""
-        return diametral_clearance(2 * self.inner_radius, 2 * self.outer_radius, 2 * self.roller_radius)
+        return tuple(float((w - self.raceways.epicyclic_cage_speed(w)) * self.raceways.inner_radius) for w in speeds)
 
     def roller_set(self) -> RollerSet:
         """The bearing for the quasi-static solver, with the scene's raceway laws."""
-        return RollerSet(rollers=len(self.rollers), pitch_diameter=self.pitch_diameter,
-                         roller_diameter=2 * self.roller_radius, roller_length=1.0,
-                         diametral_clearance=self.clearance, roller_mass=self.roller_mass,
+        raceways = self.raceways
+        return RollerSet(rollers=raceways.rollers, pitch_diameter=raceways.pitch_diameter,
+                         roller_diameter=raceways.roller_diameter, roller_length=1.0,
+                         diametral_clearance=raceways.clearance, roller_mass=self.roller_mass,
                          inner_stiffness=self.inner_law.stiffness, inner_exponent=self.inner_law.exponent,
                          outer_stiffness=self.outer_law.stiffness, outer_exponent=self.outer_law.exponent)
 
     def centrifugal_force(self, orbit_speed: float) -> float:
         """F_c [N] of a roller orbiting at ``orbit_speed`` [rad/s]."""
-        return roller_centrifugal_force(self.roller_mass, self.pitch_diameter, orbit_speed)
+        return roller_centrifugal_force(self.roller_mass, self.raceways.pitch_diameter, orbit_speed)
 
     def applied_load(self) -> tuple[np.ndarray, np.ndarray]:
         """Instants [s] (all load breakpoints) and the load (Fx, Fy) [N] on the rollers there, weight included."""
@@ -213,7 +202,7 @@ def approach(load: float, law) -> float:
 
 def operating_point(layout: BearingLayout):
     """(operating_point dict, roller load cases [(label, Q_i [N], Q_o [N])], ring mode or None)."""
-    rollers = layout.roller_set()
+    rollers, clearance = layout.roller_set(), layout.raceways.clearance
     speed = layout.shaft_speed
     solutions = {}
 
@@ -224,15 +213,15 @@ def operating_point(layout: BearingLayout):
             solutions[key] = solve_radial(rollers, key, shaft_speed=speed)
         return solutions[key]
 
-    centrifugal = layout.centrifugal_force(epicyclic_cage_speed(speed, 2 * layout.roller_radius, layout.pitch_diameter))
+    centrifugal = layout.centrifugal_force(layout.raceways.epicyclic_cage_speed(speed))
     times, force = layout.applied_load()
     magnitude = np.hypot(force[:, 0], force[:, 1])
     biggest = int(np.argmax(magnitude))
     static = float(magnitude[biggest])
     direction = force[biggest] / static if static > 0 else np.array([0.0, -1.0])
-    drop = max(layout.clearance / 2, 0.0)
+    drop = max(clearance / 2, 0.0)
 
-    solution = solve(force[biggest]) if static > 0 or layout.clearance < 0 else None
+    solution = solve(force[biggest]) if static > 0 or clearance < 0 else None
     ring_frequency = 0.0
     if solution is not None:
         ring_frequency = math.sqrt(max(np.linalg.eigvalsh(solution.stiffness).max(), 0.0) / layout.ring_mass)
@@ -252,7 +241,7 @@ def operating_point(layout: BearingLayout):
 
     cases = []
     at_peak = None
-    if peak > 0 or layout.clearance < 0:
+    if peak > 0 or clearance < 0:
         at_peak = solve(peak * direction)
         j = int(np.argmax(at_peak.inner_loads))
         cases.append(("loaded roller", float(at_peak.inner_loads[j]), float(at_peak.outer_loads[j])))
@@ -260,7 +249,7 @@ def operating_point(layout: BearingLayout):
     thrown = layout.centrifugal_force(layout.initial_orbit_speed)
     peak_centrifugal = centrifugal
     if thrown > 0:
-        gap = max(layout.clearance / 4, 0.0)
+        gap = max(clearance / 4, 0.0)
         peak_centrifugal = max(centrifugal, thrown * (1 + math.sqrt(1 + 2 * gap / approach(thrown, layout.outer_law))))
     if peak_centrifugal > 0:
         cases.append(("unloaded roller", 0.0, peak_centrifugal))
@@ -284,7 +273,7 @@ def operating_point(layout: BearingLayout):
 
 def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_load: float) -> list[Mode]:
     """Friction (tangential and spin) and radial modes of one roller with raceway loads Q_i, Q_o [N]."""
-    m, inertia, r = layout.roller_mass, layout.roller_inertia, layout.roller_radius
+    m, inertia, r = layout.roller_mass, layout.roller_inertia, layout.raceways.roller_radius
 
     def friction(law, load):
         slope = ZERO_SLIP_SLOPE[law.friction_law] / law.regularisation_speed
@@ -300,7 +289,7 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
     damping = (ci * np.outer([1, -r], [1, -r]) + co * np.outer([1, r], [1, r])
                + np.diag([drag_linear, ri + ro + drag_angular]))
     rates = np.linalg.eigvals(np.diag([1 / m, 1 / inertia]) @ damping).real
-    modes = [Mode(f"friction, {label}", "rollers", 0.0, -float(rate), max(inner_load, outer_load))
+    modes = [Mode(f"friction, {label}", str(Role.ROLLERS), 0.0, -float(rate), max(inner_load, outer_load))
              for rate in sorted(rates, reverse=True) if rate > 0][:1]
 
     def normal(law, load):
@@ -312,20 +301,21 @@ def roller_modes(layout: BearingLayout, label: str, inner_load: float, outer_loa
     ki, dni = normal(layout.inner_law, inner_load)
     ko, dno = normal(layout.outer_law, outer_load)
     if ki + ko > 0:
-        modes.append(Mode(f"radial contact, {label}", "rollers", -(ki + ko) / m, -(dni + dno) / m,
+        modes.append(Mode(f"radial contact, {label}", str(Role.ROLLERS), -(ki + ko) / m, -(dni + dno) / m,
                           max(inner_load, outer_load)))
     return modes
 
 
 def pocket_film_modes(layout: BearingLayout) -> list[Mode]:
     """The mode of a roller on a pocket wall's oil film at the film's floor (none without pocket films)."""
-    films = layout.scene.topology.group("pocket_film")
+    films = layout.scene.topology.group(Group.POCKET_FILM)
     if films.size == 0:
         return []
     pair = layout.scene.pairs[int(np.ravel(films)[0])]
     length, viscosity, half_width, floor = pair.law.film
-    cage = epicyclic_cage_speed(layout.shaft_speed, 2 * layout.roller_radius, layout.pitch_diameter)
-    entrainment = layout.roller_radius * abs(-cage * layout.pitch_diameter / (2 * layout.roller_radius) - cage) / 2
+    raceways = layout.raceways
+    cage = raceways.epicyclic_cage_speed(layout.shaft_speed)
+    entrainment = raceways.roller_radius * abs(-cage * raceways.pitch_diameter / raceways.roller_diameter - cage) / 2
 
     def load(gap, rate):
         return film_forces(viscosity, entrainment, 0.0, rate, pair.radius_b, length, half_width, gap)[0]
@@ -334,4 +324,4 @@ def pocket_film_modes(layout: BearingLayout) -> list[Mode]:
     stiffness = -(load(floor + gap_step, 0.0) - load(floor - gap_step, 0.0)) / (2 * gap_step)
     damping = -(load(floor, rate_step) - load(floor, -rate_step)) / (2 * rate_step)
     mass = layout.roller_mass
-    return [Mode("pocket film, at its floor", "rollers", -stiffness / mass, -damping / mass)]
+    return [Mode("pocket film, at its floor", str(Role.ROLLERS), -stiffness / mass, -damping / mass)]

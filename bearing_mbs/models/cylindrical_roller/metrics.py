@@ -55,6 +55,7 @@ from bearing_mbs.analysis import energy_balance_error
 from bearing_mbs.contact import kernel
 from bearing_mbs.contact.ehl import hertz_half_width
 from bearing_mbs.contact.traction import TRACTION_COLUMNS
+from bearing_mbs.core.topology import Group, Role
 from bearing_mbs.elements.contact_pairs import pack
 from bearing_mbs.models.cylindrical_roller.build import raceway_line_contact
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
@@ -73,7 +74,7 @@ UNITS = {
 }
 
 #: The raceway contact groups, in the order of the ``_inner``, ``_outer`` entries.
-RACEWAYS = ("inner_race", "outer_race")
+RACEWAYS = (Group.INNER_RACE, Group.OUTER_RACE)
 #: W/m² in one W/mm², the unit of the frictional power intensity in the outputs.
 W_PER_MM2 = 1e6
 
@@ -82,7 +83,7 @@ class LineContact(NamedTuple):
     """The Hertz line contact of a roller on a raceway: reduced modulus E' = 2/[(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] [Pa],
     reduced radius R [m] in the rolling direction and length l [m]."""
 
-    modulus: float
+    reduced_modulus: float
     radius: float
     length: float
 
@@ -103,7 +104,7 @@ def frictional_power_intensity(traction, sliding, load, contact: LineContact) ->
     speed Δu [m/s] (arrays of one shape); 0 where Q <= 0 (no contact)."""
     traction, sliding, load = np.broadcast_arrays(*(np.asarray(x, float) for x in (traction, sliding, load)))
     touching = load > 0
-    half_width = hertz_half_width(np.where(touching, load, 1.0) / contact.length, contact.radius, contact.modulus)
+    half_width = hertz_half_width(np.where(touching, load, 1.0) / contact.length, contact.radius, contact.reduced_modulus)
     return np.where(touching, np.abs(traction * sliding) / (2 * half_width * contact.length), 0.0)
 
 
@@ -143,7 +144,7 @@ def window(spec, result) -> np.ndarray:
 
 def roller_indices(scene) -> np.ndarray:
     """Body indices of the rollers, in roller order."""
-    return scene.topology.role("rollers")
+    return scene.topology.role(Role.ROLLERS)
 
 
 def pair_columns(scene, group: str) -> np.ndarray:
@@ -154,8 +155,8 @@ def pair_columns(scene, group: str) -> np.ndarray:
 
 def cage_speed(scene, result) -> np.ndarray:
     """Cage angular speed [rad/s] (T,): the cage body's, or the rollers' mean orbital speed without a cage."""
-    if scene.topology.has("cage"):
-        return result.velocity[:, 3 * scene.topology.body("cage") + 2]
+    if scene.topology.has(Role.CAGE):
+        return result.velocity[:, 3 * scene.topology.body(Role.CAGE) + 2]
     rollers = roller_indices(scene)
     x, y = result.position[:, 3 * rollers], result.position[:, 3 * rollers + 1]
     vx, vy = result.velocity[:, 3 * rollers], result.velocity[:, 3 * rollers + 1]
@@ -168,7 +169,7 @@ def slip_ratios(scene, result, race: str, load_fraction: float) -> np.ndarray:
     columns = pair_columns(scene, race)
     force = result.pair_series("normal_force")[:, columns]
     slip, rolling = result.pair_series("slip")[:, columns], result.pair_series("rolling_speed")[:, columns]
-    raceways = np.concatenate([pair_columns(scene, "inner_race"), pair_columns(scene, "outer_race")])
+    raceways = np.concatenate([pair_columns(scene, Group.INNER_RACE), pair_columns(scene, Group.OUTER_RACE)])
     largest = result.pair_series("normal_force")[:, raceways].max(axis=1, keepdims=True)
     loaded = (force > 0) & (force >= load_fraction * largest)
     rolling_floor = np.array([scene.pairs[k].law.regularisation_speed for k in columns])
@@ -186,7 +187,7 @@ def roller_orbit_angles(scene, result) -> np.ndarray:
 def load_distribution(scene, result, mask, bins: int) -> tuple[np.ndarray, np.ndarray]:
     """Mean inner-raceway load [N] against orbital angle [deg] (bin centres) over the instants in ``mask``."""
     angle = np.degrees(roller_orbit_angles(scene, result)[mask]).ravel()
-    force = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].ravel()
+    force = result.pair_series("normal_force")[mask][:, pair_columns(scene, Group.INNER_RACE)].ravel()
     edges = np.linspace(0, 360, bins + 1)
     which = np.clip(np.digitize(angle, edges) - 1, 0, bins - 1)
     sums = np.bincount(which, weights=force, minlength=bins)
@@ -197,9 +198,9 @@ def load_distribution(scene, result, mask, bins: int) -> tuple[np.ndarray, np.nd
 
 def cage_eccentricity(scene, result) -> float | None:
     """The largest distance of the cage centre from the bearing axis over the run [m]; None without a cage."""
-    if not scene.topology.has("cage"):
+    if not scene.topology.has(Role.CAGE):
         return None
-    cage = scene.topology.body("cage")
+    cage = scene.topology.body(Role.CAGE)
     return float(np.hypot(result.position[:, 3 * cage], result.position[:, 3 * cage + 1]).max())
 
 
@@ -227,12 +228,12 @@ def bearing_metrics(spec, scene, result) -> dict:
     epicyclic = geometry.epicyclic_cage_speed(inner_speed)
     ratio = float(np.mean(cage_speed(scene, result)[mask]) / np.mean(epicyclic[mask]))
     fraction = spec.analysis.load_fraction
-    slips = {race: slip_ratios(scene, result, race, fraction)[mask] for race in ("inner_race", "outer_race")}
-    inner_loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")]
+    slips = {race: slip_ratios(scene, result, race, fraction)[mask] for race in RACEWAYS}
+    inner_loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, Group.INNER_RACE)]
     angles, loads = load_distribution(scene, result, mask, 2 * geometry.rollers)
     offset = result.position[mask][:, :2].mean(axis=0)
 
-    pocket = pair_columns(scene, "pocket")
+    pocket = pair_columns(scene, Group.POCKET)
     if pocket.size:
         max_pocket = float(result.pair_series("normal_force")[mask][:, pocket].max())
     elif scene.constraints:
@@ -250,9 +251,9 @@ def bearing_metrics(spec, scene, result) -> dict:
         "mean_inner_speed_rpm": float(np.mean(inner_speed[mask]) * 60 / (2 * np.pi)),
         "cage_speed_ratio": ratio,
         "cage_slip": 1.0 - ratio,
-        "max_roller_slip": largest(np.concatenate([slips["inner_race"].ravel(), slips["outer_race"].ravel()])),
-        "max_roller_slip_inner": largest(slips["inner_race"]),
-        "max_roller_slip_outer": largest(slips["outer_race"]),
+        "max_roller_slip": largest(np.concatenate([slips[Group.INNER_RACE].ravel(), slips[Group.OUTER_RACE].ravel()])),
+        "max_roller_slip_inner": largest(slips[Group.INNER_RACE]),
+        "max_roller_slip_outer": largest(slips[Group.OUTER_RACE]),
         "max_roller_load": float(np.percentile(inner_loads.max(axis=1), PEAK_PERCENTILE)),
         "max_impact_load": float(inner_loads.max()),
         "roller_loads": [{"angle_deg": float(a), "load_N": None if np.isnan(f) else float(f)}
@@ -261,8 +262,8 @@ def bearing_metrics(spec, scene, result) -> dict:
         "inner_ring_offset": [float(offset[0]), float(offset[1])],
         "max_pocket_force": max_pocket,
         "max_frictional_power_intensity": max((q for q in intensity.values() if q is not None), default=None),
-        "max_frictional_power_intensity_inner": intensity["inner_race"],
-        "max_frictional_power_intensity_outer": intensity["outer_race"],
+        "max_frictional_power_intensity_inner": intensity[Group.INNER_RACE],
+        "max_frictional_power_intensity_outer": intensity[Group.OUTER_RACE],
         **whole_run,
         "analysis_start": float(result.time[mask][0]),
     }

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field, replace
 from bearing_mbs.contact.line_contact import STEEL_POISSON_RATIO, STEEL_YOUNGS_MODULUS
 from bearing_mbs.contact.lubricant import PRESETS as LUBRICANTS
 from bearing_mbs.contact.lubricant import Lubricant, LubricantError
+from bearing_mbs.core.topology import Group
 from bearing_mbs.spec import ContactSpec, Spec
 from bearing_mbs.spec.fields import SpecError, finite, in_range, non_negative, one_of, positive, require
 from bearing_mbs.spec.loading import to_mapping
@@ -462,7 +463,9 @@ class LubricantSpec:
                     f"adds to the churning drag: needs model = 'churning', not {self.model!r}")
 
     def lubricant(self) -> Lubricant | None:
-        """The oil (a preset with this table's values over it), or None if the table names none."""
+        """The oil (a preset with this table's values over it), or None if the table names none; the build carries
+        it to the operating temperature once (:func:`~bearing_mbs.models.cylindrical_roller.operating_oil.
+        operating_oil`)."""
         if self.oil is None and self.viscosity_40 is None:
             return None
         own = {name: getattr(self, name) for name in ("viscosity_40", "viscosity_100", "density_15",
@@ -475,22 +478,6 @@ class LubricantSpec:
             return Lubricant("custom oil", **own, source="the scenario's [lubricant]")
         except LubricantError as error:
             raise SpecError(error.field, error.value, error.allowed) from None
-
-    def operating_pressure_viscosity(self) -> float:
-        """α [1/Pa] at the operating temperature, by ``pressure_viscosity_model``."""
-        oil = self.lubricant()
-        if self.pressure_viscosity_model == "roelands":
-            return oil.pressure_viscosity_at(self.temperature)
-        return oil.pressure_viscosity
-
-    def operating_viscosity(self) -> float:
-        """Kinematic viscosity [m²/s] for Palmgren's M_0: given, else the oil's at the temperature, else 32e-6."""
-        if self.viscosity is not None:
-            return self.viscosity
-        oil = self.lubricant()
-        if oil is not None and self.temperature is not None:
-            return oil.kinematic_viscosity(self.temperature)
-        return 32e-6
 
 
 @dataclass(frozen=True)
@@ -565,8 +552,8 @@ class BearingContact:
     roller: ContactSpec = SLIDING
 
 
-#: The contact groups of the bearing model, in the order of :class:`BearingContact`.
-CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
+#: The contact groups of the bearing model with a ``[contact.<group>]`` table, in the order of :class:`BearingContact`.
+CONTACT_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.LAND, Group.ROLLER)
 
 
 @dataclass(frozen=True)
@@ -597,7 +584,7 @@ class BearingModelSpec(Spec):
                     f"{capacity:.4g} N of this bearing): beyond it the raceways yield, which the model does not hold")
         for group in CONTACT_GROUPS:
             lubricated = getattr(self.contact, group).friction_law == "ehl"
-            if lubricated and group not in ("inner_race", "outer_race"):
+            if lubricated and group not in (Group.INNER_RACE, Group.OUTER_RACE):
                 raise SpecError(f"contact.{group}.friction_law", "ehl",
                                 "lubricated (EHL line-contact) traction applies to inner_race and outer_race")
             if lubricated and self.lubricant.temperature is None:

@@ -56,11 +56,11 @@ from scipy.optimize import brentq
 from bearing_mbs.contact import kernel
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
 from bearing_mbs.core.scene import OrbitConstraint, Scene
+from bearing_mbs.core.topology import Group, Role
 from bearing_mbs.elements import Drag
 from bearing_mbs.elements.contact_pairs import PairArrays, add_forces_twin, pack
 from bearing_mbs.elements.journal_bearings import LARGEST_ECCENTRICITY, JournalFilm
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
-from bearing_mbs.models.cylindrical_roller.geometry import epicyclic_cage_speed
 from bearing_mbs.models.cylindrical_roller.linearise import BearingLayout
 from bearing_mbs.models.cylindrical_roller.metrics import (
     frictional_power_intensity,
@@ -124,9 +124,9 @@ def orbit_power_intensity(spec, scene: Scene, solution: SkiddingSolution) -> tup
     each raceway's law at the solution's loads, sliding and rolling speeds (``inner_traction`` and
     ``outer_traction`` also hold the hydrodynamic rolling resistance's tangential share, which is not sliding);
     0 out of contact. ``spec`` and ``scene`` are those the solution was solved for."""
-    sign = {"inner_race": 1.0, "outer_race": -1.0}  # the inner pair's tangent is e_θ, the outer's −e_θ
-    states = {"inner_race": (solution.inner_loads, solution.inner_sliding, solution.inner_rolling),
-              "outer_race": (solution.outer_loads, solution.outer_sliding, solution.outer_rolling)}
+    sign = {Group.INNER_RACE: 1.0, Group.OUTER_RACE: -1.0}  # the inner pair's tangent is e_θ, the outer's −e_θ
+    states = {Group.INNER_RACE: (solution.inner_loads, solution.inner_sliding, solution.inner_rolling),
+              Group.OUTER_RACE: (solution.outer_loads, solution.outer_sliding, solution.outer_rolling)}
     intensity = []
     for group, (load, sliding, rolling) in states.items():
         traction = law_traction(scene, int(pair_columns(scene, group)[0]), load, sign[group] * sliding, rolling)
@@ -161,7 +161,7 @@ def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
     """The steady cage and roller speeds of a constant-speed, constant-load bearing scene with a cage."""
     bearing = _read(scene)
     layout = bearing.layout
-    epicyclic = epicyclic_cage_speed(layout.shaft_speed, 2 * layout.roller_radius, layout.pitch_diameter)
+    epicyclic = layout.raceways.epicyclic_cage_speed(layout.shaft_speed)
 
     def torque(cage_speed):
         return _state(bearing, cage_speed, phases)[0]
@@ -180,14 +180,14 @@ def solve_skidding(scene: Scene, *, phases: int = 6) -> SkiddingSolution:
                               f"{1 - BRACKET_FRACTIONS[-1]:.0%} (the drags exceed what the traction carries) or is not "
                               "driven at all")
     cage_speed = brentq(torque, low, high, xtol=1e-10 * epicyclic, rtol=1e-12)
-    roller = -(layout.shaft_speed - epicyclic) * layout.inner_radius / layout.roller_radius
+    roller = layout.raceways.epicyclic_spin_in_cage(layout.shaft_speed)
     return SkiddingSolution(cage_speed, epicyclic, roller, **_state(bearing, cage_speed, phases)[1])
 
 
 def _read(scene: Scene) -> _Bearing:
     layout = BearingLayout.of(scene)
     pairs = scene.topology.pairs if scene.topology is not None else {}
-    if layout is None or "cage" not in scene.topology.bodies:
+    if layout is None or Role.CAGE not in scene.topology.bodies:
         raise SpecError("cage.model", "none" if layout is not None else scene.name,
                         "a caged roller bearing (inner ring, rollers, cage) for the skidding balance")
     if layout.lowest_speed != layout.shaft_speed:
@@ -196,14 +196,14 @@ def _read(scene: Scene) -> _Bearing:
     _, applied = layout.applied_load()
     if np.ptp(applied, axis=0).max() > 0:
         raise SpecError("load.profile", "varies in time", "a constant load for a steady state")
-    cage_index = int(scene.topology.bodies["cage"][0])
+    cage_index = scene.topology.body(Role.CAGE)
 
     def drag_sum(body, *names):
         return tuple(sum(getattr(d, name) for d in scene.items_of(Drag) if d.body == body) for name in names)
 
     cage = scene.bodies[cage_index]
-    land = scene.pairs[int(pairs["land"][0])] if "land" in pairs else None
-    raceways = [scene.pairs[int(pairs[group][0])] for group in ("inner_race", "outer_race")]
+    land = scene.pairs[int(pairs[Group.LAND][0])] if Group.LAND in pairs else None
+    raceways = [scene.pairs[int(pairs[group][0])] for group in (Group.INNER_RACE, Group.OUTER_RACE)]
     constrained = any(isinstance(c, OrbitConstraint) for c in scene.constraints)
     return _Bearing(layout, applied[-1],
                     drag_sum(layout.rollers[0], "linear", "quadratic", "angular", "angular_quadratic"),
@@ -212,7 +212,7 @@ def _read(scene: Scene) -> _Bearing:
                     pack(raceways + ([land] if land is not None else [])),
                     np.asarray(scene.gravity, float), not constrained,
                     next((f for f in scene.items_of(JournalFilm) if f.body == cage_index), None),
-                    pocket_film_coefficients(scene, cage_index) if constrained and "pocket_film" in pairs else (0.0, 0.0))
+                    pocket_film_coefficients(scene, cage_index) if constrained and Group.POCKET_FILM in pairs else (0.0, 0.0))
 
 
 def pocket_film_coefficients(scene: Scene, cage_index: int) -> tuple[float, float]:
@@ -220,7 +220,7 @@ def pocket_film_coefficients(scene: Scene, cage_index: int) -> tuple[float, floa
     pocket walls' oil films (the film pairs' own law, :func:`bearing_mbs.elements.contact_pairs.add_forces_twin`) with
     the roller centred in its pocket, where the constraint cage holds it: at a fixed gap the films' forces are linear
     in the speeds (Reynolds' equation is), so one evaluation at 1 rad/s gives both."""
-    films = np.asarray(scene.topology.pairs["pocket_film"])[0]
+    films = np.asarray(scene.topology.pairs[Group.POCKET_FILM])[0]
     roller = scene.pairs[int(films[0])].body_b
     q = np.array([coordinate for body in scene.bodies for coordinate in body.position], float)
     v = np.zeros_like(q)
@@ -263,8 +263,9 @@ def _roller(bearing: _Bearing, cage_speed: float, spin: float, q_i: float, q_o: 
     """The forces on a roller spinning at ``spin`` [rad/s] under the contact loads [N] while the cage turns at
     ``cage_speed`` [rad/s]."""
     layout = bearing.layout
-    r, orbit, omega_i = layout.roller_radius, cage_speed * layout.pitch_diameter / 2, layout.shaft_speed
-    r_i, r_o = layout.inner_radius, layout.outer_radius
+    raceways = layout.raceways
+    r, orbit, omega_i = raceways.roller_radius, cage_speed * raceways.pitch_diameter / 2, layout.shaft_speed
+    r_i, r_o = raceways.inner_radius, raceways.outer_radius
     linear, quadratic, angular, angular_quadratic = bearing.drag
     spin_drag = (angular + angular_quadratic * abs(spin)) * spin
     du_i, du_o = orbit - spin * r - omega_i * r_i, orbit + spin * r
@@ -287,7 +288,7 @@ def _loads_around_the_orbit(bearing: _Bearing, cage_speed: float, phases: int):
     """Roller azimuths ψ [rad] in [0, 2π), sorted, and the inner and outer contact loads [N] there, from the
     load distribution with roller 0 at ``phases`` offsets across one roller pitch."""
     layout = bearing.layout
-    equivalent_shaft = cage_speed / epicyclic_cage_speed(1.0, 2 * layout.roller_radius, layout.pitch_diameter)
+    equivalent_shaft = cage_speed / layout.raceways.epicyclic_cage_speed(1.0)
     pitch = 2 * np.pi / len(layout.rollers)
     solutions = [solve_radial(replace(layout.roller_set(), first_roller_angle=pitch * k / phases), bearing.load,
                               shaft_speed=equivalent_shaft) for k in range(phases)]
@@ -359,8 +360,9 @@ def _spin_around_the_orbit(bearing: _Bearing, cage_speed: float, psi, q_i, q_o):
 def _rolling_bracket(bearing: _Bearing, cage_speed: float):
     """The middle and half width [rad/s] of the spins between rolling on the outer and on the inner raceway."""
     layout = bearing.layout
-    orbit, r = cage_speed * layout.pitch_diameter / 2, layout.roller_radius
-    on_outer, on_inner = -orbit / r, (orbit - layout.shaft_speed * layout.inner_radius) / r
+    raceways = layout.raceways
+    orbit, r = cage_speed * raceways.pitch_diameter / 2, raceways.roller_radius
+    on_outer, on_inner = -orbit / r, (orbit - layout.shaft_speed * raceways.inner_radius) / r
     return 0.5 * (on_outer + on_inner), 0.5 * abs(on_outer - on_inner) + 1.0
 
 
@@ -368,7 +370,7 @@ def _state(bearing: _Bearing, cage_speed: float, phases: int):
     """(the cage's mean torque [N m], the steady state's fields of :class:`SkiddingSolution`) at the cage
     speed [rad/s]."""
     layout = bearing.layout
-    radius, rollers = layout.pitch_diameter / 2, len(layout.rollers)
+    radius, rollers = layout.raceways.pitch_diameter / 2, layout.raceways.rollers
     psi, q_i, q_o = _loads_around_the_orbit(bearing, cage_speed, phases)
     spins, means = _spin_around_the_orbit(bearing, cage_speed, psi, q_i, q_o)
     rows = _RollerForces(*(np.array(column) for column in zip(*(_roller(bearing, cage_speed, *values)

@@ -33,6 +33,7 @@ import numpy as np
 
 from bearing_mbs.core.checks import Check, equilibrium_residual, lower_bound, upper_bound
 from bearing_mbs.core.status import status_entries, status_note
+from bearing_mbs.core.topology import Group
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models.cylindrical_roller.build import group_law
 from bearing_mbs.models.cylindrical_roller.drivetrain import RPM, steady_speed
@@ -85,7 +86,8 @@ def quasi_static_rollers(spec: Spec, first_roller_angle: float = 0.0):
     require_bearing(spec)
     geometry = BearingGeometry.from_spec(spec.bearing)
     rollers = replace(RollerSet.from_geometry(geometry), first_roller_angle=float(first_roller_angle))
-    laws = {side: group_law(spec, geometry, f"{side}_race") for side in ("inner", "outer")}
+    laws = {side: group_law(spec, geometry, group) for side, group in (("inner", Group.INNER_RACE),
+                                                                  ("outer", Group.OUTER_RACE))}
     same = all(math.isclose(laws[side].stiffness, getattr(rollers, f"{side}_stiffness"), rel_tol=1e-12)
                and laws[side].exponent == getattr(rollers, f"{side}_exponent") for side in laws)
     if same:

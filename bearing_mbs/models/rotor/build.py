@@ -17,7 +17,7 @@ from functools import lru_cache
 import numpy as np
 
 from bearing_mbs.core.scene import Body, Profile, Scene
-from bearing_mbs.core.topology import Topology
+from bearing_mbs.core.topology import Role, Topology
 from bearing_mbs.elements import VelocityServo
 from bearing_mbs.elements.journal_bearings import JournalFilm
 from bearing_mbs.elements.unbalances import Unbalance
@@ -122,4 +122,4 @@ def build_rotor_scene(spec: RotorSpec) -> Scene:
     if rotor.unbalance > 0:
         forces.append(Unbalance("unbalance", 0, rotor.unbalance))
     return Scene(spec.scenario.name, (body,), forces=tuple(forces), gravity=(0.0, -spec.scenario.gravity),
-                 topology=Topology(bodies={"rotor": [0]}))
+                 topology=Topology(bodies={Role.ROTOR: [0]}))

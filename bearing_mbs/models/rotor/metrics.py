@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 from scipy.signal import find_peaks
 
+from bearing_mbs.core.topology import Role
 from bearing_mbs.fluid_film.journal import FILM_COLLAPSE
 from bearing_mbs.io.figures import new_figure, save_figure
 from bearing_mbs.models.rotor.build import equilibrium, map_error, map_orbit_error
@@ -33,7 +34,7 @@ UNITS = {"equilibrium_eccentricity_ratio": "-", "mean_eccentricity_ratio": "-", 
 
 
 def _journal(spec: RotorSpec, result):
-    index = 3 * int(result.topology.body("rotor"))
+    index = 3 * int(result.topology.body(Role.ROTOR))
     return result.position[:, index : index + 2], result.velocity[:, index + 2]
 
 
@@ -120,7 +121,7 @@ def rotor_metrics(spec: RotorSpec, scene, result) -> dict:
     if spec.bearing.force == "map":
         summary["map_interpolation_error"] = map_error(spec)
         samples = np.linspace(0, result.time.size - 1, ORBIT_SAMPLES).astype(int)
-        index = 3 * int(result.topology.body("rotor"))
+        index = 3 * int(result.topology.body(Role.ROTOR))
         summary["map_orbit_error"] = map_orbit_error(spec, result.position[samples, index: index + 2],
                                                      result.velocity[samples, index: index + 3])
     return summary

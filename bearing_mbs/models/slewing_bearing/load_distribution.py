@@ -30,7 +30,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_stiffness
+from bearing_mbs.contact.line_contact import reduced_modulus
+from bearing_mbs.contact.point_contact import ball_groove_curvatures, hertz_stiffness
 from bearing_mbs.elements.slewing_bearings import bearing_state
 from bearing_mbs.models.slewing_bearing.flexible import FlexibleRings, NotConverged, flexible_state
 from bearing_mbs.models.slewing_bearing.geometry import ball_count
@@ -44,7 +45,7 @@ def diagonal_stiffness(ball_diameter: float, conformity: float, pitch_diameter: 
                        youngs_modulus: float, poisson_ratio: float) -> float:
     """K [N/m^1.5] of one diagonal: the ball's inner-ring and outer-ring Hertz contacts in series,
     (K_i^{-2/3} + K_o^{-2/3})^{-3/2}, each from the exact solution with the raceway's curvature."""
-    modulus = effective_modulus(youngs_modulus, poisson_ratio, youngs_modulus, poisson_ratio)
+    modulus = reduced_modulus(youngs_modulus, poisson_ratio, youngs_modulus, poisson_ratio)
     k_inner, k_outer = (hertz_stiffness(ball_groove_curvatures(ball_diameter, conformity, pitch_diameter,
                                                                contact_angle, ring), modulus)
                         for ring in ("inner", "outer"))

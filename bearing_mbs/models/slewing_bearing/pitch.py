@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_mbs.core.scene import Body, Profile, Scene, half_cosine
-from bearing_mbs.core.topology import Topology
+from bearing_mbs.core.topology import Role, Topology
 from bearing_mbs.elements import Load
 from bearing_mbs.elements.slewing_bearings import SlewingBearingJoint
 from bearing_mbs.io.figures import new_figure, save_figure
@@ -71,7 +71,7 @@ def build_pitch_scene(spec: SlewingSpec) -> Scene:
     if np.any(moment):
         loads.append(Load("tilting_moment", 0, (0.0, 0.0, 1.0), Profile(tuple(times), tuple(moment))))
     return Scene(spec.scenario.name, (body,), forces=(joint, *loads), gravity=(0.0, -spec.scenario.gravity),
-                 topology=Topology(bodies={"blade_root": [0]}))
+                 topology=Topology(bodies={Role.BLADE_ROOT: [0]}))
 
 
 def pitch_metrics(spec: SlewingSpec, scene: Scene, result) -> dict:

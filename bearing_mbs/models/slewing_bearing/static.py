@@ -17,7 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_mbs.contact.point_contact import ball_groove_curvatures, effective_modulus, hertz_contact
+from bearing_mbs.contact.line_contact import reduced_modulus
+from bearing_mbs.contact.point_contact import ball_groove_curvatures, hertz_contact
 from bearing_mbs.core.checks import Check, equilibrium_residual, lower_bound, upper_bound
 from bearing_mbs.core.status import status_entries, status_note
 from bearing_mbs.io.json import json_safe, rounded, write_json
@@ -72,7 +73,7 @@ def largest_pressure(spec: SlewingSpec, state: Distribution) -> float:
     """The largest contact pressure [Pa] over the balls' inner and outer contacts (exact Hertz at each loaded
     contact's angle)."""
     s = spec.slewing
-    modulus = effective_modulus(s.youngs_modulus, s.poisson_ratio, s.youngs_modulus, s.poisson_ratio)
+    modulus = reduced_modulus(s.youngs_modulus, s.poisson_ratio, s.youngs_modulus, s.poisson_ratio)
     k, d = np.unravel_index(int(np.argmax(state.ball_loads)), state.ball_loads.shape)
     load = state.ball_loads[k, d]
     if load <= 0:

@@ -12,10 +12,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from bearing_mbs.core.topology import Group
+
 from bearing_mbs.models.cylindrical_roller import metrics as skidding
 from bearing_mbs.models.protocol import ErrorNorms
 
-RACES = ("inner_race", "outer_race")
+RACES = (Group.INNER_RACE, Group.OUTER_RACE)
 
 
 def window_start(spec) -> float:
@@ -27,7 +29,7 @@ def errors(spec, scene, run, reference, mask) -> dict:
     """``cage_speed``, ``roller_loads`` and ``slips`` of ``run`` against ``reference`` over ``mask``."""
     cage_run, cage_ref = skidding.cage_speed(scene, run)[mask], skidding.cage_speed(scene, reference)[mask]
     norms = {"cage_speed": float(abs(cage_run.mean() - cage_ref.mean()) / abs(cage_ref.mean()))}
-    inner = skidding.pair_columns(scene, "inner_race")
+    inner = skidding.pair_columns(scene, Group.INNER_RACE)
     loads_run = run.pair_series("normal_force")[mask][:, inner]
     loads_ref = reference.pair_series("normal_force")[mask][:, inner]
     norms["roller_loads"] = float(np.abs(loads_run - loads_ref).max() / loads_ref.max())

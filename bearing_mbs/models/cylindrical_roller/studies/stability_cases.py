@@ -6,12 +6,13 @@ from __future__ import annotations
 
 import math
 
+from bearing_mbs.core.topology import Group
 from bearing_mbs.models.cylindrical_roller.build import group_law
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.spec import CONTACT_GROUPS
 from bearing_mbs.models.protocol import StabilityCase, StabilitySuite
 
-CONTACT_GROUPS = ("inner_race", "outer_race", "pocket", "land", "roller")
-FORCE_GROUPS = ("inner_race", "outer_race", "pocket")  # the groups whose stiffness a case scales
+FORCE_GROUPS = (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET)  # the groups whose stiffness a case scales
 
 
 def _contact(data, key, value, groups=CONTACT_GROUPS):

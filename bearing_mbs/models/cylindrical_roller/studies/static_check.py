@@ -63,6 +63,7 @@ from bearing_mbs.core.checks import Check, upper_bound
 from bearing_mbs.core.result import SUCCESS
 from bearing_mbs.core.scene import Profile
 from bearing_mbs.core.status import worst_status
+from bearing_mbs.core.topology import Group
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models.cylindrical_roller.spec import AnalysisSpec, DriveSpec, LoadSpec
 from bearing_mbs.models.cylindrical_roller.stiffness import quasi_static_load, require_bearing, solve_scenario
@@ -189,7 +190,7 @@ def static_equilibrium(services: StudyServices, spec: Spec, applied, settings: S
     drift = float(np.hypot(*(ring[half:].mean(axis=0) - ring[:half].mean(axis=0)))) / scale
     amplitude = float(np.max(np.hypot(*(ring - displacement).T))) / scale
     angles = np.unwrap(roller_orbit_angles(scene, result)[mask], axis=0).mean(axis=0)
-    loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, "inner_race")].mean(axis=0)
+    loads = result.pair_series("normal_force")[mask][:, pair_columns(scene, Group.INNER_RACE)].mean(axis=0)
     speed = float(np.max(np.hypot(*result.velocity[mask][:, :2].T)))
     if result.completed:
         result.checks = (*result.checks, *settling_checks(settings, drift, amplitude))
