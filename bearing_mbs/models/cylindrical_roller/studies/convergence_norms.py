@@ -13,7 +13,6 @@ from __future__ import annotations
 import numpy as np
 
 from bearing_mbs.core.topology import Group
-
 from bearing_mbs.models.cylindrical_roller import metrics as skidding
 from bearing_mbs.models.protocol import ErrorNorms
 
