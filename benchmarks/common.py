@@ -10,7 +10,7 @@ import time
 from importlib import metadata
 from pathlib import Path
 
-from bearing_mbs._numba_cache import invalidate_if_stale
+from bearing_mbs.core.numba_cache import invalidate_if_stale
 
 #: The repository's scenario files.
 SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"

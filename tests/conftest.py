@@ -4,7 +4,7 @@ processes at once (``tests/warm_cache.py``), so that the workers load them rathe
 
 import warm_cache
 
-from bearing_mbs._numba_cache import invalidate_if_stale
+from bearing_mbs.core.numba_cache import invalidate_if_stale
 
 
 def pytest_configure(config):

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from bearing_mbs._numba_cache import isolated_cache_dir
+from bearing_mbs.core.numba_cache import isolated_cache_dir
 
 CHECKS = Path(__file__).with_name("isolated_force_element.py")
 

@@ -26,10 +26,10 @@ import argparse
 import logging
 import sys
 
-from bearing_mbs._numba_cache import invalidate_if_stale
 from bearing_mbs.cli import models, runs, studies
 from bearing_mbs.cli.options import BAD_INPUT, exit_code, remove_created_output
 from bearing_mbs.core.interrupt import StopRequest, stop_on_signals
+from bearing_mbs.core.numba_cache import invalidate_if_stale
 from bearing_mbs.core.result import INTERRUPTED
 from bearing_mbs.spec import SpecError
 

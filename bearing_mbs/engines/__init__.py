@@ -3,7 +3,9 @@
 * ``reference`` — our compiled explicit integrators (:mod:`.reference`).
 * ``exudyn`` — Exudyn rigid bodies with our force elements in one generic ODE2 object (:mod:`.exudyn`).
 
-Engines know scenes, force elements and solvers, and nothing of any model.
+Engines know scenes, force elements and solvers, and nothing of any model, nor of each other: what both do
+around their stepping (the run's frame, the guard on a state, the output a stopped run keeps, the ``Result``) is in
+:mod:`.run`, the failure messages in :mod:`.diagnosis`.
 
 Both stop within about a second of a SIGINT or SIGTERM (:mod:`bearing_mbs.core.interrupt`) with the failure kind
 ``INTERRUPTED`` and every output instant computed so far.

@@ -119,7 +119,7 @@ def report(names: list[str]) -> None:
 
 
 def main() -> None:
-    from bearing_mbs._numba_cache import invalidate_if_stale
+    from bearing_mbs.core.numba_cache import invalidate_if_stale
 
     invalidate_if_stale()
     arguments = sys.argv[1:]

@@ -22,7 +22,6 @@ from __future__ import annotations
 import contextlib
 import io
 import math
-import time
 
 import numpy as np
 
@@ -34,13 +33,7 @@ from bearing_mbs.core.progress import ProgressMeter, notice_if_slow
 from bearing_mbs.core.result import Result, Stats
 from bearing_mbs.core.scene import DistanceConstraint, OrbitConstraint, Scene
 from bearing_mbs.elements import element_forces, has_analytic_jacobian, pack_scene
-from bearing_mbs.engines.diagnosis import (
-    diverged_message,
-    interrupted_message,
-    output_grid,
-    penetration_message,
-    step_fix,
-)
+from bearing_mbs.engines.diagnosis import failure_message, output_grid, step_fix
 from bearing_mbs.engines.exudyn.connectors import (
     ForceConnector,
     JacobianConnector,
@@ -48,6 +41,7 @@ from bearing_mbs.engines.exudyn.connectors import (
     check_native,
     without_pairs,
 )
+from bearing_mbs.engines.run import Series, assemble_result, progress_meter, state_guard, stop_request, timed_run
 from bearing_mbs.spec.fields import SpecError
 from bearing_mbs.spec.solver import SolverSpec
 
@@ -70,33 +64,59 @@ def check_supported(scene: Scene, solver: SolverSpec) -> None:
 def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
                     spec: dict | None = None, stop: StopRequest | None = None,
                     step_advice: str | None = None) -> Result:
+    """Run ``scene`` from 0 to ``end_time`` [s] with Exudyn's settings of ``solver``: build the system (bodies,
+    constraints, force elements), watch every accepted step (:class:`_StepMonitor`), solve, and keep what was
+    computed (see :func:`bearing_mbs.engines.simulate`)."""
     import exudyn as exu
+
+    check_supported(scene, solver)
+    settings = solver.exudyn
+    progress = progress_meter(progress)
+    packed = pack_scene(scene)
+    reference, _ = scene.initial_state()
+    latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
+
+    container = exu.SystemContainer()  # holds the system: keep it alive while the system runs
+    mbs = container.AddSystem()
+    nodes, bodies = _add_bodies(mbs, scene)
+    joints = _add_constraints(mbs, scene, nodes, bodies)
+    connector, jacobian = _add_force_elements(mbs, scene, packed, reference, latched, settings, nodes, bodies)
+    monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
+                           lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop_request(stop),
+                           step_advice)
+    mbs.SetPostStepUserFunction(monitor)
+    mbs.Assemble()
+
+    solved, exudyn_log, wall_time_s = _solve(mbs, exu, settings, end_time, progress, scene, solver, monitor,
+                                             step_advice)
+    stats = _stats(mbs, connector, settings.connector == "native", wall_time_s)
+    if not solved and monitor.failure == Failure.NONE:
+        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, _last_line(exudyn_log),
+                                                            step_advice))
+    series = Series.from_rows(monitor.rows)
+    if monitor.failure != Failure.NONE:  # keep the state where the run stopped
+        series = series.kept(len(monitor.rows), monitor.stop_row())
+    metadata = {"connector": settings.connector, "jacobian": _jacobian_used(settings, jacobian),
+                "jacobian_user_evaluations": jacobian.evaluations if jacobian else 0, "exudyn_log": exudyn_log,
+                "exudyn_version": exu.__version__}
+    return assemble_result("exudyn", settings, scene, series, events, stats, monitor.failure, monitor.message, spec,
+                           metadata)
+
+
+def _add_bodies(mbs, scene: Scene) -> tuple[list, list]:
+    """One rigid body per scene body (a body with an orbit constraint keeps :data:`CARRIER_SHARE` of its rotational
+    inertia), its fixed coordinates tied to the ground, and gravity where there is any; returns the nodes and the
+    bodies."""
     from exudyn.itemInterface import (
         LoadMassProportional,
         MarkerBodyMass,
-        MarkerBodyPosition,
-        MarkerBodyRigid,
         MarkerNodeCoordinate,
         NodePointGround,
         NodeRigidBody2D,
         ObjectConnectorCoordinate,
-        ObjectConnectorDistance,
-        ObjectGenericODE2,
-        ObjectGround,
-        ObjectJointPrismatic2D,
         ObjectRigidBody2D,
     )
 
-    check_supported(scene, solver)
-    settings = solver.exudyn
-    progress = progress or ProgressMeter()
-    packed = pack_scene(scene)
-    n = scene.coordinate_count
-    reference, _ = scene.initial_state()
-    latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
-
-    container = exu.SystemContainer()
-    mbs = container.AddSystem()
     carried = {c.body_a for c in scene.constraints if isinstance(c, OrbitConstraint)}
     inertia = [b.inertia * (CARRIER_SHARE if i in carried else 1.0) for i, b in enumerate(scene.bodies)]
     nodes = [mbs.AddNode(NodeRigidBody2D(referenceCoordinates=list(b.position), initialVelocities=list(b.velocity)))
@@ -118,27 +138,20 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
         for body in bodies:
             marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
             mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
+    return nodes, bodies
+
+
+def _add_constraints(mbs, scene: Scene, nodes: list, bodies: list) -> list:
+    """The scene's constraints as Exudyn joints (see the module's docstring); returns the joints, whose reaction
+    forces are the result's constraint forces."""
+    from exudyn.itemInterface import (
+        MarkerBodyPosition,
+        MarkerBodyRigid,
+        ObjectConnectorDistance,
+        ObjectJointPrismatic2D,
+    )
 
     carriers: dict[int, int] = {}
-
-    def carrier_of(index):
-        """The carrier of body ``index`` (built on first use)."""
-        if index not in carriers:
-            body = scene.bodies[index]
-            node = mbs.AddNode(NodeRigidBody2D(referenceCoordinates=[0.0, 0.0, body.position[2]],
-                                               initialVelocities=[0.0, 0.0, body.velocity[2]]))
-            carrier = mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=body.mass,
-                                                      inertia=body.inertia * (1 - CARRIER_SHARE)))
-            ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=mbs.AddNode(NodePointGround()), coordinate=0))
-            for c in range(2):  # pinned at the origin
-                mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[
-                    ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))]))
-            mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[  # turning with the body
-                mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=nodes[index], coordinate=2)),
-                mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=2))]))
-            carriers[index] = carrier
-        return carriers[index]
-
     joints = []
     for constraint in scene.constraints:
         if isinstance(constraint, DistanceConstraint):
@@ -147,14 +160,52 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
             joints.append(mbs.AddObject(ObjectConnectorDistance(markerNumbers=markers, distance=constraint.length)))
         else:  # the centre of b on a line of a (or of a's carrier): (p_a − c_b)·n = 0 with n normal to the line
             orbit = isinstance(constraint, OrbitConstraint)
-            holder = carrier_of(constraint.body_a) if orbit else bodies[constraint.body_a]
+            if orbit and constraint.body_a not in carriers:
+                carriers[constraint.body_a] = _add_carrier(mbs, scene, nodes, constraint.body_a)
+            holder = carriers[constraint.body_a] if orbit else bodies[constraint.body_a]
             on_line = mbs.AddMarker(MarkerBodyRigid(bodyNumber=holder,
                                                     localPosition=[0, 0, 0] if orbit else [*constraint.anchor, 0]))
             centre = mbs.AddMarker(MarkerBodyRigid(bodyNumber=bodies[constraint.body_b], localPosition=[0, 0, 0]))
             dx, dy = constraint.direction
             joints.append(mbs.AddObject(ObjectJointPrismatic2D(markerNumbers=[centre, on_line], axisMarker0=[1, 0, 0],
                                                                normalMarker1=[-dy, dx, 0], constrainRotation=False)))
+    return joints
 
+
+def _add_carrier(mbs, scene: Scene, nodes: list, index: int) -> int:
+    """The carrier of body ``index``: pinned at the world origin, turning with the body, with the rest of its
+    rotational inertia (1 − :data:`CARRIER_SHARE`); returns the carrier's body."""
+    from exudyn.itemInterface import (
+        MarkerNodeCoordinate,
+        NodePointGround,
+        NodeRigidBody2D,
+        ObjectConnectorCoordinate,
+        ObjectRigidBody2D,
+    )
+
+    body = scene.bodies[index]
+    node = mbs.AddNode(NodeRigidBody2D(referenceCoordinates=[0.0, 0.0, body.position[2]],
+                                       initialVelocities=[0.0, 0.0, body.velocity[2]]))
+    carrier = mbs.AddObject(ObjectRigidBody2D(nodeNumber=node, mass=body.mass,
+                                              inertia=body.inertia * (1 - CARRIER_SHARE)))
+    ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=mbs.AddNode(NodePointGround()), coordinate=0))
+    for c in range(2):  # pinned at the origin
+        mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[
+            ground, mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))]))
+    mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[  # turning with the body
+        mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=nodes[index], coordinate=2)),
+        mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=2))]))
+    return carrier
+
+
+def _add_force_elements(mbs, scene: Scene, packed, reference: np.ndarray, latched: np.ndarray, settings,
+                        nodes: list, bodies: list):
+    """The contacts (Exudyn's own with the native connector) and every other force element, through our compiled
+    kernels in one generic ODE2 object, compiled here, outside the timed region; returns the force connector and
+    the Jacobian connector (None where not used)."""
+    from exudyn.itemInterface import ObjectGenericODE2, ObjectGround
+
+    n = scene.coordinate_count
     connector = jacobian = None
     native = settings.connector == "native"
     if native:
@@ -173,52 +224,40 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
             jacobian.evaluations = 0
         mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector,
                                         jacobianUserFunction=jacobian or 0))
+    return connector, jacobian
 
-    monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                           lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop or StopRequest(),
-                           step_advice)
-    mbs.SetPostStepUserFunction(monitor)
-    mbs.Assemble()
 
+def _solve(mbs, exu, settings, end_time: float, progress: ProgressMeter, scene: Scene, solver: SolverSpec,
+           monitor: _StepMonitor, step_advice: str | None) -> tuple[bool, str, float]:
+    """Exudyn's solver over [0, ``end_time``], its console output captured; an exception (a solver that gives up)
+    is a ``SOLVER_FAILED`` stop unless the monitor stopped the run first. Returns whether it solved, the console
+    output and the wall time [s]."""
     simulation = _simulation_settings(exu, settings, end_time)
     log = io.StringIO()
-    progress.start(end_time, f"{scene.name} (exudyn {settings.method}, {settings.connector})")
-    started = time.perf_counter()
-    try:
-        with contextlib.redirect_stdout(log):  # Exudyn prints through Python
-            solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType, settings.entry.exudyn))
-    except Exception as error:  # Exudyn raises when a solver gives up
-        solved = False
-        if not monitor.message:
-            monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, str(error), step_advice))
-    finally:
-        wall = time.perf_counter() - started
-        progress.close()
-    exudyn_log = log.getvalue()
+    solved = False
+    with timed_run(progress, end_time, f"{scene.name} (exudyn {settings.method}, {settings.connector})") as clock:
+        try:
+            with contextlib.redirect_stdout(log):  # Exudyn prints through Python
+                solved = mbs.SolveDynamic(simulation, solverType=getattr(exu.DynamicSolverType, settings.entry.exudyn))
+        except Exception as error:  # noqa: BLE001 (Exudyn raises when a solver gives up)
+            solved = False
+            if monitor.failure == Failure.NONE:
+                monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, str(error),
+                                                                    step_advice))
+    return solved, log.getvalue(), clock.wall_time_s
 
+
+def _stats(mbs, connector, native: bool, wall_time_s: float) -> Stats:
+    """The run's cost from Exudyn's solver counters and the connector's force evaluations (None with the native
+    connector, whose contacts Exudyn evaluates uncounted)."""
     iteration = mbs.sys["dynamicSolver"].it
-    stats = Stats(
+    return Stats(
         steps=int(iteration.currentStepIndex) - 1,  # Exudyn counts from 1
         rejected_steps=int(iteration.rejectedAutomaticStepSizeSteps),
         force_evaluations=None if native else connector.evaluations if connector else 0,
         newton_iterations=int(iteration.newtonStepsCount),
         jacobian_evaluations=int(iteration.newtonJacobiCount),
-        wall_time_s=wall,
-    )
-    if not solved and not monitor.message:
-        monitor.fail(Failure.SOLVER_FAILED, _solver_failure(scene, solver, monitor.time, _last_line(exudyn_log),
-                                                                   step_advice))
-    if monitor.message:
-        monitor.record_final()
-    out_t, out_q, out_v, out_pairs, out_work, out_constraints = monitor.outputs()
-    return Result(
-        engine="exudyn", method=settings.method, step=settings.step, time=out_t, position=out_q, velocity=out_v,
-        pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events, body_names=tuple(b.name for b in scene.bodies),
-        pair_names=tuple(p.name for p in scene.pairs), stats=stats,
-        failure=monitor.failure, message=monitor.message, spec=spec, topology=scene.topology,
-        metadata={"connector": settings.connector, "jacobian": _jacobian_used(settings, jacobian),
-                  "jacobian_user_evaluations": jacobian.evaluations if jacobian else 0, "exudyn_log": exudyn_log,
-                  "exudyn_version": exu.__version__},
+        wall_time_s=wall_time_s,
     )
 
 
@@ -299,22 +338,24 @@ class _StepMonitor:
         return element_forces(self.packed.elements, t, self.q, self.v, self.latched, self._forces, self._pairs,
                               complete)
 
-    def _record(self, t, constraint_forces=None):
+    def _row(self, t, constraint_forces=None) -> tuple:
+        """The output row of the current state at t [s] (the pairs' outputs evaluated in full)."""
         self._evaluate(t, complete=True)
         forces = self.constraint_forces() if constraint_forces is None else constraint_forces
-        self.rows.append((t, self.q.copy(), self.v.copy(), self._pairs.copy(), self.work.copy(), np.array(forces)))
+        return t, self.q.copy(), self.v.copy(), self._pairs.copy(), self.work.copy(), np.array(forces)
+
+    def _record(self, t, constraint_forces=None):
+        self.rows.append(self._row(t, constraint_forces))
 
     def __call__(self, mbs, t):
+        """After each accepted step: the guards, the work (trapezoid rule), the pairs' state, output at the output
+        instants, progress and the stop request. Returns False to stop Exudyn after this step."""
         data = mbs.systemData
         q = self.reference + np.asarray(data.GetODE2Coordinates())[: self.reference.size]
         v = np.asarray(data.GetODE2Coordinates_t())[: self.reference.size]
-        finite = np.isfinite(q) & np.isfinite(v)
-        speed = np.hypot(v[0::3], v[1::3])
-        if not finite.all() or speed.max() > self.solver.speed_limit:
-            coordinate = int(np.flatnonzero(~finite)[0]) if not finite.all() else 3 * int(np.argmax(speed))
-            kind = Failure.BLOWUP if finite.all() else Failure.NONFINITE
-            return self.fail(kind, diverged_message(self.scene, self.solver, t, coordinate, self.q, self.v, self.latched,
-                                                    finite.all(), self.step_advice))
+        kind, coordinate = state_guard(q, v, self.solver.speed_limit)
+        if kind != Failure.NONE:  # named from the last good state
+            return self._stop(kind, t, coordinate, self.q, self.v)
         h = t - self.time
         self.q, self.v, self.time = q, v, t
         power = np.array(self._evaluate(t))  # before the latch update: the forces of the step just taken
@@ -322,26 +363,28 @@ class _StepMonitor:
         self._power = power
         _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
-            return self.fail(Failure.PENETRATION, penetration_message(self.scene, self.solver, t, worst, q, v,
-                                                                           self.step_advice))
+            return self._stop(Failure.PENETRATION, t, worst, q, v)
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
             self._record(t)
         self._calls += 1
         if self._calls % self._progress_every == 0:
             self.progress.update(t)
         if self.stop.is_set():
-            return self.fail(Failure.INTERRUPTED, interrupted_message(t))
+            return self._stop(Failure.INTERRUPTED, t, -1, q, v)
         return True
 
+    def _stop(self, failure: Failure, t: float, culprit: int, q, v) -> bool:
+        """Stop with ``failure`` at t [s], its message made from the state (q, v) and the culprit (coordinate or
+        pair)."""
+        return self.fail(failure, failure_message(failure, self.scene, self.solver, t, culprit, q, v, self.latched,
+                                                  self.solver.exudyn.step, self.step_advice))
+
     def fail(self, failure: Failure, message: str) -> bool:
+        """Record the first stop and its message; returns False, which tells Exudyn to stop after this step."""
         if self.failure == Failure.NONE:
             self.failure, self.message = failure, message
-        return False  # tells Exudyn to stop after this step
+        return False
 
-    def record_final(self):
-        if self.rows[-1][0] < self.time:
-            self._record(self.time)
-
-    def outputs(self):
-        """time, position, velocity, pair outputs, work, constraint forces, as arrays."""
-        return tuple(np.array([row[i] for row in self.rows]) for i in range(6))
+    def stop_row(self):
+        """The output row of the state where the run stopped, or None when the last row already holds it."""
+        return self._row(self.time) if self.rows[-1][0] < self.time else None

@@ -1,10 +1,12 @@
 """Python side of the reference engine: packs the scene, runs the compiled driver in chunks (for the
-progress meter), and turns its status into a :class:`~bearing_mbs.core.failures.Failure` and a message
-(:mod:`bearing_mbs.engines.diagnosis`)."""
+progress meter and the stop request), and turns its status into a :class:`~bearing_mbs.core.failures.Failure` and
+a message (:mod:`bearing_mbs.engines.diagnosis`). The run's frame, the output a stopped run keeps and the
+:class:`~bearing_mbs.core.result.Result` are both engines' (:mod:`bearing_mbs.engines.run`)."""
 
 from __future__ import annotations
 
 import time
+from typing import NamedTuple
 
 import numpy as np
 
@@ -44,6 +46,7 @@ from bearing_mbs.engines.reference.dynamics import accelerations
 from bearing_mbs.engines.reference.integrators import integrate
 from bearing_mbs.engines.reference.step_control import step_controller
 from bearing_mbs.engines.reference.tableaus import TABLEAUS
+from bearing_mbs.engines.run import Series, assemble_result, progress_meter, stop_request, timed_run
 from bearing_mbs.spec.solver import SolverSpec
 
 #: What a user reads while the driver compiles (the first run after an install or a change of the kernels).
@@ -79,88 +82,121 @@ def newton_system(scene: Scene) -> BlockSystem:
 def simulate_reference(scene: Scene, solver: SolverSpec, end_time: float, progress: ProgressMeter | None = None,
                        spec: dict | None = None, stop: StopRequest | None = None,
                        step_advice: str | None = None) -> Result:
+    """Run ``scene`` from 0 to ``end_time`` [s] with the reference engine's settings of ``solver``: compile the
+    driver, record the initial state, step in chunks until the end, a failure or a stop request, and keep what
+    was computed (see :func:`bearing_mbs.engines.simulate`)."""
     settings = solver.reference
-    progress = progress or ProgressMeter()
-    stop = stop or StopRequest()
+    progress, stop = progress_meter(progress), stop_request(stop)
     packed = pack_scene(scene)
-    n, pair_count, constraint_count = scene.coordinate_count, len(scene.pairs), len(scene.constraints)
     q, v = scene.initial_state()
     latched, events, bounds = initial_pair_state(packed.pairs, solver.penetration_limit)
     state = State(q, v, latched, events, np.zeros(2))
-
     times = output_grid(end_time, solver.output_interval)
+    driver = _driver(scene, solver, packed, state, bounds, times)
+
+    with notice_if_slow(COMPILING):
+        driver.advance(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
+    output = driver.output
+    series = Series(output.t, output.q, output.v, output.pairs, output.work, output.constraints)
+    *initial, initial_acceleration = _state_row(scene, packed, state, 0.0)
+    for buffer, value in zip(series, initial):
+        buffer[0] = value
+    if driver.method == CENTRAL_DIFFERENCE:
+        backward_difference_start(v, initial_acceleration, settings.step, times)
+
+    with timed_run(progress, end_time, f"{scene.name} (reference {settings.method})") as clock:
+        t, h_adaptive, index, status, culprit = _run_in_chunks(driver, times, settings.step, stop, progress)
+
+    failure = Failure(status)
+    message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive, step_advice)
+    if failure == Failure.INTERRUPTED:  # stopped at an output instant: keep the instants computed
+        series = series.kept(index)
+    elif failure != Failure.NONE:  # keep the state where the run stopped
+        series = series.kept(index, _state_row(scene, packed, state, t)[:6])
+    stats = _stats(output.counters, driver.method, clock.wall_time_s)
+    return assemble_result("reference", settings, scene, series, events, stats, failure, message, spec)
+
+
+class _Driver(NamedTuple):
+    """The compiled driver's arguments that stay the same over a run: the method (code, adaptive), the packed
+    scene, the Runge–Kutta tableau, the controls, the state and the bundles it works in (each kind of method gets
+    its own carries, the other kind's are None: see :func:`~.integrators.integrate`), and the output."""
+
+    method: int
+    adaptive: bool
+    packed: object
+    tableau: object
+    controls: Controls
+    state: State
+    verlet: object
+    stages: object
+    implicit: object
+    workspace: object
+    output: object
+
+    def advance(self, t: float, t_stop: float, h_adaptive: float, index: int):
+        """Step from t towards t_stop [s] (-1: compile only), from output instant ``index`` on: see
+        :func:`~.integrators.integrate` for what it returns."""
+        return integrate(self.method, self.adaptive, self.packed, self.tableau, self.controls, self.state,
+                         self.verlet, self.stages, self.implicit, self.workspace, self.output, t, t_stop, h_adaptive,
+                         index)
+
+
+def _driver(scene: Scene, solver: SolverSpec, packed, state: State, bounds, times: np.ndarray) -> _Driver:
+    """The driver of ``solver.reference``'s method on ``scene``, its output buffers allocated for ``times``."""
+    settings = solver.reference
+    n, pair_count, constraint_count = scene.coordinate_count, len(scene.pairs), len(scene.constraints)
     output = new_output(times, n, pair_count, N_PAIR_OUTPUTS, constraint_count)
     method = METHOD_CODES[settings.method]
     tableau = runge_kutta_tableau(TABLEAUS.get(settings.method))
     controls = Controls(float(settings.step), float(settings.contact_step or 0.0), float(settings.tolerance),
                         float(solver.speed_limit), bounds, float(settings.spectral_radius), has_analytic_jacobian(scene),
                         step_controller(settings.entry))
-    # each kind of method gets its own carries, the other kind's are None (see integrate)
     if method == GENERALIZED_ALPHA:
         implicit, verlet, stages = new_implicit_carry(n, newton_system(scene)), None, None
     else:
         implicit, verlet, stages = None, new_verlet_carry(n), new_runge_kutta_stages(tableau.b.size, n)
     workspace = new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_system(scene))
+    return _Driver(method, settings.adaptive, packed, tableau, controls, state, verlet, stages, implicit, workspace,
+                   output)
 
-    def run(t, t_stop, h_adaptive, index):
-        return integrate(method, settings.adaptive, packed, tableau, controls, state, verlet, stages, implicit,
-                         workspace, output, t, t_stop, h_adaptive, index)
 
-    with notice_if_slow(COMPILING):
-        run(0.0, -1.0, settings.step, 1)  # compile (or load from cache) outside the timed region
+def _state_row(scene: Scene, packed, state: State, t: float) -> tuple:
+    """The state at t as an output row (the initial state, or the state where a run stopped), and its
+    acceleration."""
+    n = scene.coordinate_count
+    acceleration, scratch = np.empty(n), new_workspace(n, len(scene.pairs), N_PAIR_OUTPUTS, constraint_system(scene))
+    accelerations(packed, t, state.q, state.v, state.latched, acceleration, scratch, True, True)
+    return (t, state.q.copy(), state.v.copy(), scratch.pair_out, state.work.copy(), scratch.constraint_forces,
+            acceleration)
 
-    def record(t):
-        """The state at t as an output row (initial state, or the state where a run stopped), and its
-        acceleration."""
-        acceleration, scratch = np.empty(n), new_workspace(n, pair_count, N_PAIR_OUTPUTS, constraint_system(scene))
-        accelerations(packed, t, q, v, latched, acceleration, scratch, True, True)
-        return t, q.copy(), v.copy(), scratch.pair_out, state.work.copy(), scratch.constraint_forces, acceleration
 
-    series = [output.t, output.q, output.v, output.pairs, output.work, output.constraints]
-    *initial, initial_acceleration = record(0.0)
-    for buffer, value in zip(series, initial):
-        buffer[0] = value
-    if method == CENTRAL_DIFFERENCE:
-        backward_difference_start(v, initial_acceleration, settings.step, times)
-
-    progress.start(end_time, f"{scene.name} (reference {settings.method})")
-    t, h_adaptive, index, status, culprit = 0.0, settings.step, 1, RUNNING, -1
-    started = time.perf_counter()
+def _run_in_chunks(driver: _Driver, times: np.ndarray, step: float, stop: StopRequest, progress: ProgressMeter):
+    """Run the driver from the first output instant to the last in chunks of about :data:`_CHUNK_WALL_TIME`,
+    updating the meter and looking at the stop request between two; a request left unanswered ends the run as
+    ``INTERRUPTED`` at the last instant reached. Returns (t, h_adaptive, index, status, culprit) as the driver
+    does."""
+    t, h_adaptive, index, status, culprit = 0.0, step, 1, RUNNING, -1
     samples = 1  # output intervals per chunk, grown until a chunk takes about _CHUNK_WALL_TIME
-    try:
-        while index < times.size and not stop.is_set():
-            chunk_started = time.perf_counter()
-            t, h_adaptive, index, status, culprit = run(t, times[min(index + samples, times.size) - 1], h_adaptive,
-                                                        index)
-            progress.update(t)
-            if status != RUNNING:
-                break
-            elapsed = time.perf_counter() - chunk_started
-            samples = max(1, min(4 * samples, int(samples * _CHUNK_WALL_TIME / max(elapsed, 1e-6))))
-        if status == RUNNING and index < times.size:
-            status = int(Failure.INTERRUPTED)
-    finally:
-        wall = time.perf_counter() - started
-        progress.close()
+    while index < times.size and not stop.is_set():
+        chunk_started = time.perf_counter()
+        t, h_adaptive, index, status, culprit = driver.advance(t, times[min(index + samples, times.size) - 1],
+                                                               h_adaptive, index)
+        progress.update(t)
+        if status != RUNNING:
+            break
+        elapsed = time.perf_counter() - chunk_started
+        samples = max(1, min(4 * samples, int(samples * _CHUNK_WALL_TIME / max(elapsed, 1e-6))))
+    if status == RUNNING and index < times.size:
+        status = int(Failure.INTERRUPTED)
+    return t, h_adaptive, index, status, culprit
 
-    counters = output.counters
+
+def _stats(counters: np.ndarray, method: int, wall_time_s: float) -> Stats:
+    """The run's cost from the driver's counters; Newton's counts for generalized-α only."""
     implicit_counts = {}
     if method == GENERALIZED_ALPHA:
         implicit_counts = {"newton_iterations": int(counters[NEWTON_ITERATIONS]),
                            "jacobian_evaluations": int(counters[JACOBIANS])}
-    stats = Stats(steps=int(counters[STEPS]), rejected_steps=int(counters[REJECTED]),
-                  force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall, **implicit_counts)
-    failure = Failure(status)
-    message = failure_message(failure, scene, solver, t, culprit, q, v, latched, h_adaptive, step_advice)
-    if failure == Failure.INTERRUPTED:  # stopped at an output instant: keep the instants computed
-        series = [a[:index] for a in series]
-    elif failure != Failure.NONE:
-        final = record(t)[:6]  # keep the state where the run stopped
-        series = [np.concatenate([a[:index], np.asarray(b)[None]]) for a, b in zip(series, final)]
-    out_t, out_q, out_v, out_pairs, out_work, out_constraints = series
-    return Result(
-        engine="reference", method=settings.method, step=settings.step, time=out_t, position=out_q,
-        velocity=out_v, pair_output=out_pairs, constraint_forces=out_constraints, work=out_work, events=events,
-        body_names=tuple(b.name for b in scene.bodies), pair_names=tuple(p.name for p in scene.pairs),
-        stats=stats, failure=failure, message=message, spec=spec, topology=scene.topology,
-    )
+    return Stats(steps=int(counters[STEPS]), rejected_steps=int(counters[REJECTED]),
+                 force_evaluations=int(counters[EVALUATIONS]), wall_time_s=wall_time_s, **implicit_counts)

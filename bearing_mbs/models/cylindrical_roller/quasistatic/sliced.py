@@ -165,151 +165,32 @@ def sliced_roller_equilibrium(
     model: SlicedRollerSet, radial, ring_tilt, centrifugal_force: float, settings: NewtonSettings = NewtonSettings()
 ) -> SlicedRollerEquilibrium:
     """Solve every roller's equilibrium for ring motions ``radial`` :math:`u_r` [m] and ``ring_tilt``
-    :math:`\\varphi` [rad] (1-D arrays of equal length) under the centrifugal force [N]."""
-    rollers = model.rollers
-    radial = np.atleast_1d(np.asarray(radial, dtype=float))
-    ring_tilt = np.atleast_1d(np.asarray(ring_tilt, dtype=float))
-    fc = float(centrifugal_force)
-    z, w, ell = model.slice_positions, model.slice_width, model.half_length
-    hi, ho = model.inner_drops, model.outer_drops
-    ci = slice_coefficient(rollers.inner_stiffness, rollers.roller_length)
-    co = slice_coefficient(rollers.outer_stiffness, rollers.roller_length)
-    ni, no = rollers.inner_exponent, rollers.outer_exponent
-    jb = rollers.contact_clearance
-
-    def contacts(v, beta, rows=slice(None)):
-        inner = sliced_contact(radial[rows] - v - jb, ring_tilt[rows] - beta, z, hi, w, ci, ni)
-        outer = sliced_contact(v - jb, beta, z, ho, w, co, no)
-        return inner, outer
-
-    def radial_equilibrium(beta, rows, tolerance):
-        """v solving R1 = 0 at tilts β (bracketed: no outer contact at ``lower``, no inner one and an outer
-        load >= F_c at ``upper``)."""
-
-        def residual(v):
-            inner, outer = contacts(v, beta, rows)
-            return inner.force - outer.force + fc, -inner.force_approach - outer.force_approach
-
-        lower = np.min(jb + ho - beta[:, None] * z, axis=1)
-        inner_free = np.max(radial[rows, None] - jb + (ring_tilt[rows] - beta)[:, None] * z - hi, axis=1)
-        upper = np.maximum(inner_free, lower + (fc / (co * w)) ** (1.0 / no))
-        v, _ = decreasing_root(
-            residual,
-            lower,
-            upper,
-            0.5 * (lower + upper),
-            tolerance=tolerance,
-            max_iterations=settings.roller_max_iterations,
-            field="roller_max_iterations",
-            what="the radial equilibrium of a sliced roller",
-        )
-        return v
-
-    total = radial[:, None] - 2.0 * jb + ring_tilt[:, None] * z - hi - ho
-    loose = (fc == 0.0) & (total.max(axis=1) <= 0.0)
+    :math:`\\varphi` [rad] (1-D arrays of equal length) under the centrifugal force [N]: start at the uncrowned
+    tilt split, Newton–Raphson on (v, β), the bracketed safeguard for the rollers it has not settled, then the
+    condensed stiffness; loose rollers carry nothing."""
+    rollers = _RollerContacts(model, radial, ring_tilt, centrifugal_force, settings)
+    total = rollers.interference()
+    loose = (rollers.fc == 0.0) & (total.max(axis=1) <= 0.0)
 
     # Start: the tilt split of uncrowned rollers, then the radial equilibrium at that tilt.
-    beta = ring_tilt / (1.0 + (co / ci) ** (1.0 / no))
-    v = radial_equilibrium(beta, slice(None), 1e-6)
+    beta = rollers.uncrowned_tilt()
+    v = rollers.radial_equilibrium(beta, slice(None), 1e-6)
+    v, beta, inner, outer, unsettled, iterations = _newton(rollers, v, beta, ~loose, model.slices)
+    if unsettled.any():
+        iterations += _tilt_safeguard(rollers, v, beta, np.flatnonzero(unsettled), total)
+        inner, outer = rollers.contacts(v, beta)
 
-    # Newton–Raphson on (v, β), in scaled unknowns (v, ℓβ) and residuals (R1, R2/ℓ). Converged when the
-    # residual is below the tolerance relative to the largest roller load of the set (a roller carrying
-    # 1e-5 of it need not be solved to 1e-13 of its own load), or when the step is at the round-off level
-    # of the lengths involved (the interference δ + αz − h loses digits to cancellation).
-    active = ~loose
-    inner, outer = contacts(v, beta)
-    floor = max(settings.roller_tolerance, 16 * np.finfo(float).eps * model.slices)
-    newton_limit = min(settings.roller_max_iterations, NEWTON_ITERATIONS)
-    iterations = 0
-    while True:
-        residual = np.stack([inner.force - outer.force + fc, (inner.moment - outer.moment) / ell], axis=1)
-        norm = np.linalg.norm(residual, axis=1)
-        scale = max(inner.force.max(), outer.force.max(), fc)
-        step = regularised_solve(_scaled(inner, ell) + _scaled(outer, ell), residual)
-        size = np.abs(radial) + np.abs(v) + abs(jb) + ell * (np.abs(ring_tilt) + np.abs(beta)) + max(hi.max(), ho.max())
-        active &= (norm > floor * scale) & (np.linalg.norm(step, axis=1) > 1e-14 * size)
-        if not active.any() or iterations >= newton_limit:
-            break
-        iterations += 1
-        step[~active] = 0.0
-        potential = inner.energy + outer.energy - fc * v
-        slope = -np.einsum("ij,ij->i", residual, step)
-        roundoff = 1e-13 * (inner.energy + outer.energy + np.abs(fc * v))
-        alpha = np.ones_like(v)
-        pending = active.copy()
-        new_v, new_beta = v.copy(), beta.copy()
-        for _ in range(MAX_HALVINGS):
-            trial_v, trial_beta = v + alpha * step[:, 0], beta + alpha * step[:, 1] / ell
-            trial_inner, trial_outer = contacts(trial_v, trial_beta)
-            trial_potential = trial_inner.energy + trial_outer.energy - fc * trial_v
-            trial_norm = np.hypot(
-                trial_inner.force - trial_outer.force + fc, (trial_inner.moment - trial_outer.moment) / ell
-            )
-            accept = pending & (
-                (trial_potential <= potential + ARMIJO * alpha * slope + roundoff)
-                | (trial_norm <= (1.0 - ARMIJO * alpha) * norm)
-            )
-            new_v, new_beta = np.where(accept, trial_v, new_v), np.where(accept, trial_beta, new_beta)
-            pending &= ~accept
-            if not pending.any():
-                break
-            alpha = np.where(pending, 0.5 * alpha, alpha)
-        v, beta = new_v, new_beta
-        inner, outer = contacts(v, beta)
-
-    if active.any():
-        # Safeguard for the rollers Newton has not settled (single-slice contacts make K_t singular and the
-        # step zigzag): eliminate v exactly, R1(v(β), β) = 0, and solve the reduced moment balance
-        # g(β) = R2(v(β), β) = 0, non-increasing in β with g' = −(H22 − H12²/H11) (H = K_t^i + K_t^o, the
-        # Schur complement of a positive semi-definite matrix), by bracketed, safeguarded Newton.
-        rows = np.flatnonzero(active)
-
-        def reduced(trial_beta):
-            trial_v = radial_equilibrium(trial_beta, rows, 1e-15)
-            inner, outer = contacts(trial_v, trial_beta, rows)
-            h11 = inner.force_approach + outer.force_approach
-            h12 = inner.force_tilt + outer.force_tilt
-            h22 = inner.moment_tilt + outer.moment_tilt
-            with np.errstate(divide="ignore", invalid="ignore"):
-                schur = np.where(h11 > 0.0, h22 - h12**2 / np.where(h11 > 0.0, h11, 1.0), h22)
-            return inner.moment - outer.moment, -schur
-
-        start = beta[rows]
-        reach = np.maximum(np.abs(ring_tilt[rows]), (np.abs(total[rows]).max(axis=1) + abs(jb)) / ell) + 1e-12
-        lower, upper = start - reach, start + reach
-        for _ in range(MAX_DOUBLINGS):
-            low, high = reduced(lower)[0] < 0.0, reduced(upper)[0] > 0.0
-            if not (low.any() or high.any()):
-                break
-            reach = np.where(low | high, 2.0 * reach, reach)
-            lower, upper = np.where(low, start - reach, lower), np.where(high, start + reach, upper)
-        beta_rows, extra = decreasing_root(
-            reduced,
-            lower,
-            upper,
-            start,
-            tolerance=1e-15,
-            max_iterations=settings.roller_max_iterations,
-            field="roller_max_iterations",
-            what="the tilt of a sliced roller",
-            residual_scale=lambda b: 1.0 / ell,
-        )
-        beta[rows] = beta_rows
-        v[rows] = radial_equilibrium(beta_rows, rows, 1e-15)
-        iterations += extra
-        inner, outer = contacts(v, beta)
-
+    ell = rollers.ell
     condensed = _unscaled(_condense(_scaled(inner, ell), _scaled(outer, ell)), ell)
-    energy = inner.energy + outer.energy - fc * v
+    energy = rollers.potential(inner, outer, v)
     if loose.any():
         zero = np.where(loose, 0.0, 1.0)
-        inner = SlicedContact(*(field * (zero[:, None] if field.ndim == 2 else zero) for field in inner))
-        outer = SlicedContact(*(field * (zero[:, None] if field.ndim == 2 else zero) for field in outer))
+        inner, outer = _times_rows(inner, zero), _times_rows(outer, zero)
         condensed = condensed * zero[:, None, None]
         energy = energy * zero
     return SlicedRollerEquilibrium(
-        radial=radial,
-        ring_tilt=ring_tilt,
+        radial=rollers.radial,
+        ring_tilt=rollers.ring_tilt,
         roller_displacement=v,
         roller_tilt=beta,
         inner=inner,
@@ -319,6 +200,189 @@ def sliced_roller_equilibrium(
         loose=loose,
         iterations=iterations,
     )
+
+
+class _RollerContacts:
+    """The rollers' two sliced contacts at ring motions :math:`(u_r, \\varphi)` [m, rad] (Z,) under the
+    centrifugal force :math:`F_c` [N], as functions of the rollers' unknowns :math:`(v, \\beta)`: the one
+    place that holds the slices, the crown drops, :math:`C_f`, :math:`n` and :math:`J_b` of the set."""
+
+    def __init__(self, model: SlicedRollerSet, radial, ring_tilt, centrifugal_force: float, settings: NewtonSettings):
+        rollers = model.rollers
+        self.radial = np.atleast_1d(np.asarray(radial, dtype=float))
+        self.ring_tilt = np.atleast_1d(np.asarray(ring_tilt, dtype=float))
+        self.fc = float(centrifugal_force)
+        self.settings = settings
+        self.z, self.w, self.ell = model.slice_positions, model.slice_width, model.half_length
+        self.hi, self.ho = model.inner_drops, model.outer_drops
+        self.ci = slice_coefficient(rollers.inner_stiffness, rollers.roller_length)
+        self.co = slice_coefficient(rollers.outer_stiffness, rollers.roller_length)
+        self.ni, self.no = rollers.inner_exponent, rollers.outer_exponent
+        self.jb = rollers.contact_clearance
+
+    def contacts(self, v, beta, rows=slice(None)) -> tuple[SlicedContact, SlicedContact]:
+        """Inner and outer contacts of the rollers ``rows`` at (v [m], β [rad]): δ_i = u_r − v − J_b,
+        α_i = φ − β; δ_o = v − J_b, α_o = β."""
+        inner = sliced_contact(self.radial[rows] - v - self.jb, self.ring_tilt[rows] - beta, self.z, self.hi, self.w,
+                               self.ci, self.ni)
+        outer = sliced_contact(v - self.jb, beta, self.z, self.ho, self.w, self.co, self.no)
+        return inner, outer
+
+    def residual(self, inner: SlicedContact, outer: SlicedContact) -> np.ndarray:
+        """:math:`(R_1, R_2/\\ell) = (Q_i - Q_o + F_c, (M_i - M_o)/\\ell)` [N], (Z, 2)."""
+        return np.stack([inner.force - outer.force + self.fc, (inner.moment - outer.moment) / self.ell], axis=1)
+
+    def potential(self, inner: SlicedContact, outer: SlicedContact, v) -> np.ndarray:
+        """The rollers' potential :math:`E_i + E_o - F_c v` [J] (its gradient is :math:`-R`)."""
+        return inner.energy + outer.energy - self.fc * v
+
+    def interference(self) -> np.ndarray:
+        """:math:`u_r - 2J_b + \\varphi z_k - h_{i,k} - h_{o,k}` [m], (Z, N): positive where a slice of a straight
+        roller would touch both raceways."""
+        return self.radial[:, None] - 2.0 * self.jb + self.ring_tilt[:, None] * self.z - self.hi - self.ho
+
+    def uncrowned_tilt(self) -> np.ndarray:
+        """The tilt split :math:`\\beta_0` [rad] of uncrowned rollers, the start of the solve."""
+        return self.ring_tilt / (1.0 + (self.co / self.ci) ** (1.0 / self.no))
+
+    def length_scale(self, v, beta) -> np.ndarray:
+        """The lengths [m] an interference is made of, per roller: the round-off level of a Newton step."""
+        return (np.abs(self.radial) + np.abs(v) + abs(self.jb) + self.ell * (np.abs(self.ring_tilt) + np.abs(beta))
+                + max(self.hi.max(), self.ho.max()))
+
+    def radial_equilibrium(self, beta, rows, tolerance: float) -> np.ndarray:
+        """v [m] solving R1 = 0 at tilts β for the rollers ``rows`` (bracketed: no outer contact at ``lower``, no
+        inner one and an outer load >= F_c at ``upper``)."""
+        z, jb = self.z, self.jb
+
+        def residual(v):
+            inner, outer = self.contacts(v, beta, rows)
+            return inner.force - outer.force + self.fc, -inner.force_approach - outer.force_approach
+
+        lower = np.min(jb + self.ho - beta[:, None] * z, axis=1)
+        inner_free = np.max(self.radial[rows, None] - jb + (self.ring_tilt[rows] - beta)[:, None] * z - self.hi,
+                            axis=1)
+        upper = np.maximum(inner_free, lower + (self.fc / (self.co * self.w)) ** (1.0 / self.no))
+        v, _ = decreasing_root(
+            residual,
+            lower,
+            upper,
+            0.5 * (lower + upper),
+            tolerance=tolerance,
+            max_iterations=self.settings.roller_max_iterations,
+            field="roller_max_iterations",
+            what="the radial equilibrium of a sliced roller",
+        )
+        return v
+
+
+def _newton(rollers: _RollerContacts, v, beta, active, slices: int):
+    """Newton–Raphson on (v, β) of the ``active`` rollers, in scaled unknowns (v, ℓβ) and residuals (R1, R2/ℓ),
+    each step shortened by :func:`_line_search`. A roller has converged when its residual is below the tolerance
+    relative to the largest roller load of the set (a roller carrying 1e-5 of it need not be solved to 1e-13 of
+    its own load), or when its step is at the round-off level of the lengths involved (the interference
+    δ + αz − h loses digits to cancellation). Returns (v, β, inner, outer, unsettled, iterations): the rollers
+    still unsettled after :data:`NEWTON_ITERATIONS`."""
+    settings, ell = rollers.settings, rollers.ell
+    inner, outer = rollers.contacts(v, beta)
+    floor = max(settings.roller_tolerance, 16 * np.finfo(float).eps * slices)
+    newton_limit = min(settings.roller_max_iterations, NEWTON_ITERATIONS)
+    iterations = 0
+    while True:
+        residual = rollers.residual(inner, outer)
+        norm = np.linalg.norm(residual, axis=1)
+        scale = max(inner.force.max(), outer.force.max(), rollers.fc)
+        step = regularised_solve(_scaled(inner, ell) + _scaled(outer, ell), residual)
+        active &= (norm > floor * scale) & (np.linalg.norm(step, axis=1) > 1e-14 * rollers.length_scale(v, beta))
+        if not active.any() or iterations >= newton_limit:
+            return v, beta, inner, outer, active, iterations
+        iterations += 1
+        step[~active] = 0.0
+        v, beta = _line_search(rollers, v, beta, inner, outer, residual, norm, step, active)
+        inner, outer = rollers.contacts(v, beta)
+
+
+def _line_search(rollers: _RollerContacts, v, beta, inner, outer, residual, norm, step, active):
+    """Backtracking per roller along the Newton step: halve α until the potential decreases by the Armijo
+    fraction of the slope (up to its round-off) or the residual norm shrinks by it; returns the new (v, β)."""
+    fc, ell = rollers.fc, rollers.ell
+    potential = rollers.potential(inner, outer, v)
+    slope = -np.einsum("ij,ij->i", residual, step)
+    roundoff = 1e-13 * (inner.energy + outer.energy + np.abs(fc * v))
+    alpha = np.ones_like(v)
+    pending = active.copy()
+    new_v, new_beta = v.copy(), beta.copy()
+    for _ in range(MAX_HALVINGS):
+        trial_v, trial_beta = v + alpha * step[:, 0], beta + alpha * step[:, 1] / ell
+        trial_inner, trial_outer = rollers.contacts(trial_v, trial_beta)
+        trial_potential = rollers.potential(trial_inner, trial_outer, trial_v)
+        trial_norm = np.hypot(
+            trial_inner.force - trial_outer.force + fc, (trial_inner.moment - trial_outer.moment) / ell
+        )
+        accept = pending & (
+            (trial_potential <= potential + ARMIJO * alpha * slope + roundoff)
+            | (trial_norm <= (1.0 - ARMIJO * alpha) * norm)
+        )
+        new_v, new_beta = np.where(accept, trial_v, new_v), np.where(accept, trial_beta, new_beta)
+        pending &= ~accept
+        if not pending.any():
+            break
+        alpha = np.where(pending, 0.5 * alpha, alpha)
+    return new_v, new_beta
+
+
+def _tilt_safeguard(rollers: _RollerContacts, v, beta, rows, total) -> int:
+    """Safeguard for the rollers ``rows`` Newton has not settled (single-slice contacts make K_t singular and the
+    step zigzag): eliminate v exactly, R1(v(β), β) = 0, and solve the reduced moment balance
+    g(β) = R2(v(β), β) = 0, non-increasing in β with g' = −(H22 − H12²/H11) (H = K_t^i + K_t^o, the Schur
+    complement of a positive semi-definite matrix), by bracketed, safeguarded Newton. Writes their v and β;
+    returns its iterations."""
+    ell = rollers.ell
+
+    def reduced(trial_beta):
+        trial_v = rollers.radial_equilibrium(trial_beta, rows, 1e-15)
+        inner, outer = rollers.contacts(trial_v, trial_beta, rows)
+        h11 = inner.force_approach + outer.force_approach
+        h12 = inner.force_tilt + outer.force_tilt
+        h22 = inner.moment_tilt + outer.moment_tilt
+        with np.errstate(divide="ignore", invalid="ignore"):
+            schur = np.where(h11 > 0.0, h22 - h12**2 / np.where(h11 > 0.0, h11, 1.0), h22)
+        return inner.moment - outer.moment, -schur
+
+    start = beta[rows]
+    reach = np.maximum(np.abs(rollers.ring_tilt[rows]), (np.abs(total[rows]).max(axis=1) + abs(rollers.jb)) / ell)
+    lower, upper = _tilt_bracket(reduced, start, reach + 1e-12)
+    beta_rows, extra = decreasing_root(
+        reduced,
+        lower,
+        upper,
+        start,
+        tolerance=1e-15,
+        max_iterations=rollers.settings.roller_max_iterations,
+        field="roller_max_iterations",
+        what="the tilt of a sliced roller",
+        residual_scale=lambda b: 1.0 / ell,
+    )
+    beta[rows] = beta_rows
+    v[rows] = rollers.radial_equilibrium(beta_rows, rows, 1e-15)
+    return extra
+
+
+def _tilt_bracket(reduced, start, reach):
+    """Widen (start − reach, start + reach) by doubling until the non-increasing g changes sign across it."""
+    lower, upper = start - reach, start + reach
+    for _ in range(MAX_DOUBLINGS):
+        low, high = reduced(lower)[0] < 0.0, reduced(upper)[0] > 0.0
+        if not (low.any() or high.any()):
+            break
+        reach = np.where(low | high, 2.0 * reach, reach)
+        lower, upper = np.where(low, start - reach, lower), np.where(high, start + reach, upper)
+    return lower, upper
+
+
+def _times_rows(contact: SlicedContact, factor: np.ndarray) -> SlicedContact:
+    """Every field of ``contact`` times a per-roller ``factor`` (Z,) (slice forces row by row)."""
+    return SlicedContact(*(field * (factor[:, None] if field.ndim == 2 else factor) for field in contact))
 
 
 def _scaled(contact: SlicedContact, ell: float) -> np.ndarray:
@@ -411,7 +475,7 @@ def solve_sliced(
         )
     ell = model.half_length
     scale = np.array([1.0, 1.0, ell, ell])
-    u, state, iterations, residual = solve_ring(
+    _, state, iterations, residual = solve_ring(
         lambda u: _evaluate(model, u, shaft_speed, settings),
         load,
         scale,

@@ -8,7 +8,9 @@ numba recompiles.
 
 It is called by the entry points, once per process and before any compiled code runs (the command line, the
 test session, the benchmarks), never at import: a Dask worker or a library user's process does not delete
-caches under another process's feet. A sweep's driver calls it before its workers start.
+caches under another process's feet. A sweep's driver calls it before its workers start. It sits in ``core`` (it
+imports nothing of the package), so every layer's entry point may call it; being in ``core/``, it is hashed with
+the compiled sources, which costs one recompilation when it changes.
 """
 
 from __future__ import annotations
@@ -16,7 +18,8 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
-PACKAGE = Path(__file__).resolve().parent
+#: The package directory (this module is in ``core/``).
+PACKAGE = Path(__file__).resolve().parents[1]
 STAMP = PACKAGE / "__pycache__" / "numba_sources.sha256"
 #: Globs (relative to the package) of every file whose code numba compiles or whose types it reads.
 COMPILED_SOURCES = ("contact/*.py", "core/*.py", "elements/*.py", "engines/reference/*.py", "fluid_film/*.py")
