@@ -17,8 +17,9 @@ compile every kind's function once more on its own). The compiled callers
 read the sequences from this module when numba compiles them for a tuple of kinds, and a tuple's type names its
 kinds, so each compiled copy holds the calls of the kinds it was compiled for. :func:`pack_scene
 <bearing_mbs.elements.assembly.pack_scene>` calls :func:`follow_registry` first, so a kind registered from
-outside is in the sequences before any scene with it is evaluated. With ``NUMBA_DISABLE_JIT=1`` the sequences are
-plain Python.
+outside is in the sequences before any scene with it is evaluated. A compiled copy keeps the functions it was
+compiled with: a kind registered again with other functions but the same parameter type needs a new process.
+With ``NUMBA_DISABLE_JIT=1`` the sequences are plain Python.
 """
 
 from __future__ import annotations
