@@ -142,7 +142,7 @@ def _journal_call():
 
     def run():
         journal_bearings.film_load(films, 0, q, v)
-        journal_bearings.add_jacobian(films, 0.0, q, v, np.zeros(0), np.zeros((0, 8)), position, velocity)
+        journal_bearings.add_jacobian(films, 0.0, q, v, position, velocity)
     return run
 
 
@@ -178,8 +178,8 @@ def _outside_kind_call():
                             np.array([s.body_b for s in springs], dtype=np.int64),
                             np.array([s.stiffness for s in springs]))
 
-    @numba.njit
-    def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    @numba.njit(inline="always")
+    def add_spring_forces(parameters, q, forces):
         for j in range(parameters.body_a.size):
             a, b = parameters.body_a[j], parameters.body_b[j]
             dx, dy = q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1]
@@ -189,7 +189,16 @@ def _outside_kind_call():
             forces[3 * b] -= fx
             forces[3 * b + 1] -= fy
 
-    def add_forces_twin(parameters, t, q, v, latched, forces, pair_out, power, complete):
+    if hasattr(ForceElement, "force_arguments"):  # each kind takes the state it needs
+        @numba.njit(inline="always")
+        def add_forces(parameters, t, q, v, forces, power):
+            add_spring_forces(parameters, q, forces)
+    else:  # a checkout before: every kind took the contact pairs' state (``--before``)
+        @numba.njit(inline="always")
+        def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+            add_spring_forces(parameters, q, forces)
+
+    def add_forces_twin(parameters, *arguments):
         raise NotImplementedError
 
     FORCE_ELEMENTS.register(ForceElement(name="springs", item_type=Spring, parameters=SpringArrays, pack=pack,

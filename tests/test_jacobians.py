@@ -43,8 +43,11 @@ def random_items(kind, rng):
 
 def forces(element, parameters, t, q, v, latched):
     total = np.zeros(N)
-    element.add_forces(parameters, t, q, v, latched, total, np.zeros((latched.size, N_PAIR_OUTPUTS)), np.zeros(2),
-                       True)
+    if element.pair_state:
+        element.add_forces(parameters, t, q, v, latched, total, np.zeros((latched.size, N_PAIR_OUTPUTS)),
+                           np.zeros(2), True)
+    else:
+        element.add_forces(parameters, t, q, v, total, np.zeros(2))
     return total
 
 
@@ -80,7 +83,7 @@ def test_the_jacobian_matches_finite_differences(kind):
         q, v = rng.normal(scale=0.5, size=N), rng.normal(scale=3.0, size=N)
         t, latched = rng.uniform(0, 1), np.zeros(0)
         position, velocity = np.zeros((N, N)), np.zeros((N, N))
-        element.add_jacobian(parameters, t, q, v, latched, np.zeros((0, N_PAIR_OUTPUTS)), position, velocity)
+        element.add_jacobian(parameters, t, q, v, position, velocity)
         expected_position, expected_velocity = finite_differences(element, parameters, t, q, v, latched)
         for analytic, expected in ((position, expected_position), (velocity, expected_velocity)):
             scale = max(np.abs(expected).max(), 1e-300)
@@ -92,8 +95,7 @@ def test_a_drag_at_rest_has_its_linear_coefficient():
     differences straddle)."""
     parameters = drags.pack([Drag("d", 0, 0.3, 0.2, 5.0, 7.0)])
     position, velocity = np.zeros((N, N)), np.zeros((N, N))
-    drags.add_jacobian(parameters, 0.0, np.zeros(N), np.zeros(N), np.zeros(0), np.zeros((0, N_PAIR_OUTPUTS)),
-                       position, velocity)
+    drags.add_jacobian(parameters, 0.0, np.zeros(N), np.zeros(N), position, velocity)
     assert np.diag(velocity)[:3].tolist() == [-0.3, -0.3, -0.2]
     assert not position.any()
 
@@ -312,7 +314,7 @@ def test_the_journal_films_jacobian_matches_finite_differences(source, recessed)
                 [np.cos(angle), np.sin(angle)])
             v[3 * film.body + 2] = rng.choice([-1.0, 1.0]) * rng.uniform(50, 200)
         position, velocity = np.zeros((N, N)), np.zeros((N, N))
-        element.add_jacobian(parameters, 0.0, q, v, np.zeros(0), np.zeros((0, N_PAIR_OUTPUTS)), position, velocity)
+        element.add_jacobian(parameters, 0.0, q, v, position, velocity)
         expected_position, expected_velocity = finite_differences(element, parameters, 0.0, q, v, np.zeros(0), 1e-9)
         for analytic, expected in ((position, expected_position), (velocity, expected_velocity)):
             np.testing.assert_allclose(analytic, expected, rtol=0, atol=1e-6 * np.abs(expected).max(),
@@ -336,7 +338,7 @@ def test_the_slewing_bearings_jacobian_matches_finite_differences():
         for joint in joints:
             q[3 * joint.body: 3 * joint.body + 3] = np.array(joint.reference) + rng.normal(size=3) * [2e-5, 3e-5, 4e-5]
         position, velocity = np.zeros((N, N)), np.zeros((N, N))
-        element.add_jacobian(parameters, 0.0, q, v, np.zeros(0), np.zeros((0, N_PAIR_OUTPUTS)), position, velocity)
+        element.add_jacobian(parameters, 0.0, q, v, position, velocity)
         expected_position, expected_velocity = finite_differences(element, parameters, 0.0, q, v, np.zeros(0), 1e-9)
         for analytic, expected in ((position, expected_position), (velocity, expected_velocity)):
             np.testing.assert_allclose(analytic, expected, rtol=0, atol=1e-6 * np.abs(expected).max())

@@ -40,7 +40,7 @@ def test_a_spring_registered_from_outside_runs_on_both_engines():
 
 @pytest.mark.slow
 def test_a_spring_registered_from_outside_runs_on_both_implicit_solvers():
-    """Without an analytic Jacobian: the reference engine's generalized-α differentiates numerically, and Exudyn
-    falls back to its own numerical Jacobian."""
+    """With the spring's own analytic Jacobian, through the same dispatch as the built-in kinds': the reference
+    engine's generalized-α and Exudyn's analytic Jacobian use it, neither differentiates numerically."""
     output = checks("-m", "slow")
     assert re.search(r"\b2 passed", output), output[-3000:]

@@ -2,35 +2,44 @@
 
 A force element is one kind of scene item that applies forces to bodies: contact pairs, time-profile loads,
 velocity servos, viscous drags, or a kind a user registers. Each kind is one module that provides the
-:class:`ForceElement` record below, and both engines loop over the registry: adding a kind touches no engine.
+:class:`ForceElement` record below, and both engines evaluate every kind through one dispatch
+(:mod:`bearing_mbs.elements.dispatch`): adding a kind touches no engine.
 
 The contract of the evaluation functions (compiled and numpy twin alike)::
 
-    add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete) -> None
+    add_forces(parameters, t, q, v, forces, power) -> None
 
 * ``parameters`` — the kind's items packed into arrays (a ``NamedTuple`` of numpy arrays, from ``pack``);
 * ``t`` [s], ``q`` (3N,) positions (x, y, θ per body), ``v`` (3N,) velocities;
 * ``forces`` (3N,) — generalized forces [N, N, N m], to be **added to**;
 * ``power`` (2,) — running totals [W] to be **added to**: ``power[0]`` the power the kind supplies (loads,
   drives), ``power[1]`` the power it dissipates (friction, damping, drag). A conservative force supplies and
-  dissipates nothing here: its work is the change of the kind's ``potential_energy``, which closes the audit;
-* ``latched`` (P,), ``pair_out`` (P, k) — the contact pairs' per-pair state and outputs, read and written by
-  the contact-pair kind only (other kinds ignore them);
-* ``complete`` — False inside integration stages: a kind may skip outputs that no force needs.
+  dissipates nothing here: its work is the change of the kind's ``potential_energy``, which closes the audit.
 
-The compiled function is inlined into the integrators, so its arguments must carry exactly these names, and
-every local variable must be assigned on every path before it is read (numba's inliner refuses a variable
-that may be undefined).
+Each kind takes the state it needs and no more. The contact pairs (``pair_state=True``) also carry per-pair
+state and outputs, and take the long form::
+
+    add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete) -> None
+
+* ``latched`` (P,), ``pair_out`` (P, k) — the pairs' latched approach speeds and their outputs (written);
+* ``complete`` — False inside integration stages: the pairs may skip outputs that no force needs.
+
+The compiled function is called from the integrators' one compiled function of the forces: decorate it
+``numba.njit(inline="always")`` (with ``cache=True`` inside the package) so that it is inlined there, and then
+assign every local variable on every path before it is read (numba's inliner refuses a variable that may be
+undefined).
 
 A kind may also give its forces' derivatives, for implicit integrators (compiled, same conventions)::
 
-    add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity) -> None
+    add_jacobian(parameters, t, q, v, force_position, force_velocity) -> None
+    add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity) -> None  # pair_state
 
-* ``force_position`` (3N, 3N) ∂F/∂q and ``force_velocity`` (3N, 3N) ∂F/∂v, to be **added to**, at (t, q, v)
-  with the per-pair state ``latched`` held fixed (as a Newton iteration of an implicit step holds it);
-* ``pair_out`` — the pair outputs that ``add_forces`` wrote at the same (t, q, v), complete (read only).
+* ``force_position`` (3N, 3N) ∂F/∂q and ``force_velocity`` (3N, 3N) ∂F/∂v, to be **added to**, at (t, q, v);
+* for the pairs, with ``latched`` held fixed (as a Newton iteration of an implicit step holds it) and
+  ``pair_out`` the outputs that ``add_forces`` wrote at the same (t, q, v), complete (read only).
 
-A kind without one is differentiated numerically by the engines.
+The implicit methods of both engines use it wherever every kind of a scene has one; a scene with a kind without
+one is differentiated numerically by the engines.
 
 Body index −1 is the ground. All quantities are SI.
 """
@@ -44,6 +53,12 @@ from typing import Any
 import numpy as np
 
 from bearing_mbs.core.registry import Registry
+
+#: The arguments of the two forms of ``add_forces`` and ``add_jacobian`` after ``parameters`` (module docstring).
+FORCE_ARGUMENTS = ("t", "q", "v", "forces", "power")
+FORCE_ARGUMENTS_WITH_PAIR_STATE = ("t", "q", "v", "latched", "forces", "pair_out", "power", "complete")
+JACOBIAN_ARGUMENTS = ("t", "q", "v", "force_position", "force_velocity")
+JACOBIAN_ARGUMENTS_WITH_PAIR_STATE = ("t", "q", "v", "latched", "pair_out", "force_position", "force_velocity")
 
 
 def no_potential_energy(parameters, position: np.ndarray, pair_output: np.ndarray) -> None:
@@ -64,7 +79,9 @@ class ForceElement:
     * ``add_forces_twin`` — its readable numpy twin, same contract, held to the compiled one by the tests;
     * ``potential_energy(parameters, position, pair_output) -> (T,) array | None`` — the energy the kind
       stores [J] at each output instant, from the result's positions (T, 3N) and pair outputs (T, P, k);
-    * ``add_jacobian`` — the compiled derivatives of its forces (module docstring), or None.
+    * ``add_jacobian`` — the compiled derivatives of its forces (module docstring), or None;
+    * ``pair_state`` — True for the contact pairs alone: their functions take the per-pair state (``latched``,
+      ``pair_out``) and ``complete`` (the long form in the module docstring).
     """
 
     name: str
@@ -75,6 +92,17 @@ class ForceElement:
     add_forces_twin: Callable
     potential_energy: Callable = no_potential_energy
     add_jacobian: Callable | None = None
+    pair_state: bool = False
+
+    @property
+    def force_arguments(self) -> tuple[str, ...]:
+        """The names of the arguments ``add_forces`` and ``add_forces_twin`` take after ``parameters``."""
+        return FORCE_ARGUMENTS_WITH_PAIR_STATE if self.pair_state else FORCE_ARGUMENTS
+
+    @property
+    def jacobian_arguments(self) -> tuple[str, ...]:
+        """The names of the arguments ``add_jacobian`` takes after ``parameters``."""
+        return JACOBIAN_ARGUMENTS_WITH_PAIR_STATE if self.pair_state else JACOBIAN_ARGUMENTS
 
 
 class ForceElementRegistry(Registry[ForceElement]):

@@ -1,5 +1,6 @@
 """Force elements: one module per kind (contact pairs, loads, velocity servos, drags), registered once in
-:data:`FORCE_ELEMENTS`; :mod:`.assembly` packs a scene and evaluates all its forces by looping over the kinds.
+:data:`FORCE_ELEMENTS`; :mod:`.assembly` packs a scene and evaluates all its forces and their Jacobians, every kind
+through one dispatch (:mod:`.dispatch`).
 
 Protocol: :mod:`bearing_mbs.core.force_element`. A worked example of adding a kind: ``docs/guide-add-a-force-element.md``.
 """

@@ -2,9 +2,9 @@
 
 :func:`pack_scene` packs the contact pairs and every registered force-element kind (registry order) into
 :class:`PackedScene`. :func:`element_forces` (compiled; :func:`scene_forces` calls it with a packed scene) and
-:func:`scene_forces_twin` (numpy) add the forces of every kind; in compiled code each kind's parameters have their own type: the built-in kinds are called one by
-one, and numba resolves, inlines and orders the calls to any kind registered from outside when it types the
-scene's tuple of kinds. Gravity and constraint forces are the engines' business.
+:func:`scene_forces_twin` (numpy) add the forces of every kind, and :func:`element_jacobian` their analytic
+Jacobians, built-in and registered kinds alike through one dispatch (:mod:`bearing_mbs.elements.dispatch`).
+Gravity and constraint forces are the engines' business.
 """
 
 from __future__ import annotations
@@ -13,15 +13,11 @@ from typing import NamedTuple
 
 import numba
 import numpy as np
-from numba.extending import overload
 
 from bearing_mbs.core.scene import CONSTRAINT_KINDS, Scene
-from bearing_mbs.elements import contact_pairs
+from bearing_mbs.elements import contact_pairs, dispatch
 from bearing_mbs.elements.contact_pairs import PairArrays
-from bearing_mbs.elements.registry import BUILT_IN, FORCE_ELEMENTS, add_built_in_forces, add_built_in_jacobians
-
-#: The built-in kinds lead the tuple of packed kinds; kinds registered from outside follow.
-BUILT_IN_COUNT = len(BUILT_IN)
+from bearing_mbs.elements.registry import FORCE_ELEMENTS
 
 
 class ConstraintArrays(NamedTuple):
@@ -73,6 +69,7 @@ def pack_scene(scene: Scene) -> PackedScene:
     gravity *= free
     for item in scene.forces:
         FORCE_ELEMENTS.of_item(item)  # an unregistered kind is an error, not silently dropped
+    dispatch.follow_registry()  # a kind registered since the last scene joins the evaluation
     pairs = contact_pairs.pack(scene.pairs)
     # every registered kind, with no items where the scene has none: one compiled specialisation serves all scenes
     elements = tuple(pairs if element is contact_pairs.ELEMENT else element.pack(scene.items_of(element.item_type))
@@ -92,42 +89,6 @@ def scene_counts(scene: Scene) -> dict:
     return counts
 
 
-def add_kind_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
-    """Add the forces of one kind: its numpy twin here; in compiled code, its registered compiled function,
-    inlined (the overload below)."""
-    FORCE_ELEMENTS.of_parameters(type(parameters)).add_forces_twin(
-        parameters, t, q, v, latched, forces, pair_out, power, complete)
-
-
-@overload(add_kind_forces, inline="always")
-def _add_kind_forces_compiled(parameters, t, q, v, latched, forces, pair_out, power, complete):
-    return FORCE_ELEMENTS.of_parameters(parameters.instance_class).add_forces.py_func
-
-
-def add_element_forces(elements, t, q, v, latched, forces, pair_out, power, complete):
-    """Add the forces of every kind in the tuple ``elements``, in order."""
-    for parameters in elements:
-        add_kind_forces(parameters, t, q, v, latched, forces, pair_out, power, complete)
-
-
-@overload(add_element_forces, inline="always")
-def _add_element_forces_compiled(elements, t, q, v, latched, forces, pair_out, power, complete):
-    """Compiled form, for the kinds registered from outside the package (the built-in ones are called directly,
-    :func:`~bearing_mbs.elements.registry.add_built_in_forces`). A tuple of different kinds cannot be iterated in
-    compiled code, so the first kind is added and the rest of the tuple (a shorter tuple type) recurses, until
-    it is empty; every level is inlined."""
-    return _add_first_then_rest if len(elements) else _add_nothing
-
-
-def _add_first_then_rest(elements, t, q, v, latched, forces, pair_out, power, complete):
-    add_kind_forces(elements[0], t, q, v, latched, forces, pair_out, power, complete)
-    add_element_forces(elements[1:], t, q, v, latched, forces, pair_out, power, complete)
-
-
-def _add_nothing(elements, t, q, v, latched, forces, pair_out, power, complete):
-    pass
-
-
 @numba.njit(cache=True, inline="always")
 def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     """Generalized forces [N, N, N m per body] of the packed kinds ``elements`` (:attr:`PackedScene.elements`),
@@ -144,8 +105,7 @@ def element_forces(elements, t, q, v, latched, forces, pair_out, complete=True):
     """
     forces[:] = 0.0
     power = np.zeros(2)
-    add_built_in_forces(elements, t, q, v, latched, forces, pair_out, power, complete)
-    add_element_forces(elements[BUILT_IN_COUNT:], t, q, v, latched, forces, pair_out, power, complete)
+    dispatch.add_element_forces(elements, t, q, v, latched, forces, pair_out, power, complete)
     return power[0], power[1]
 
 
@@ -156,26 +116,27 @@ def scene_forces(packed, t, q, v, latched, forces, pair_out, complete=True):
 
 
 def has_analytic_jacobian(scene: Scene) -> bool:
-    """Whether every force item of ``scene`` is of a kind with an analytic Jacobian that :func:`element_jacobian`
-    assembles (the built-in kinds; a kind registered from outside is differentiated numerically)."""
-    return all(FORCE_ELEMENTS.of_item(item) in BUILT_IN for item in scene.forces)
+    """Whether every force item of ``scene`` is of a kind with an analytic Jacobian (``ForceElement.add_jacobian``,
+    built-in or registered), which :func:`element_jacobian` then assembles; the engines differentiate a scene
+    with any other kind numerically."""
+    return all(FORCE_ELEMENTS.of_item(item).add_jacobian is not None for item in scene.forces)
 
 
 @numba.njit(cache=True)
 def element_jacobian(elements, t, q, v, latched, pair_out, force_position, force_velocity):
-    """∂F/∂q and ∂F/∂v (3N × 3N each, overwritten) of the built-in kinds of ``elements`` at (t, q, v), with
-    ``pair_out`` the pair outputs :func:`element_forces` wrote there (complete) and the latched approach speeds
-    held. For scenes with :func:`has_analytic_jacobian`."""
+    """∂F/∂q and ∂F/∂v (3N × 3N each, overwritten) of the kinds of ``elements`` at (t, q, v), with ``pair_out``
+    the pair outputs :func:`element_forces` wrote there (complete) and the latched approach speeds held. For
+    scenes with :func:`has_analytic_jacobian` (a kind without an analytic Jacobian adds nothing)."""
     force_position[:, :] = 0.0
     force_velocity[:, :] = 0.0
-    add_built_in_jacobians(elements, t, q, v, latched, pair_out, force_position, force_velocity)
+    dispatch.add_element_jacobians(elements, t, q, v, latched, pair_out, force_position, force_velocity)
 
 
 def element_forces_twin(elements, t, q, v, latched, forces, pair_out, complete=True):
     """Same contract as :func:`element_forces`, with every kind's numpy twin (always complete)."""
     forces[:] = 0.0
     power = np.zeros(2)
-    add_element_forces(elements, t, q, v, latched, forces, pair_out, power, True)
+    dispatch.add_element_forces_twin(elements, t, q, v, latched, forces, pair_out, power, True)
     return power[0], power[1]
 
 

@@ -217,4 +217,4 @@ def potential_energy(pairs, position, pair_output):
 
 ELEMENT = ForceElement(name="pairs", item_type=ContactPair, parameters=PairArrays, pack=pack,
                        add_forces=add_forces, add_forces_twin=add_forces_twin, potential_energy=potential_energy,
-                       add_jacobian=add_jacobian)
+                       add_jacobian=add_jacobian, pair_state=True)

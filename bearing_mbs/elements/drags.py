@@ -44,7 +44,7 @@ def pack(drags) -> DragArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, forces, power):
     drags = parameters
     for j in range(drags.body.size):
         i = 3 * drags.body[j]
@@ -57,7 +57,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         power[1] += resistance * speed_squared + angular * v[i + 2] ** 2
 
 
-def add_forces_twin(drags, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces_twin(drags, t, q, v, forces, power):
     body_forces, velocities = forces.reshape(-1, 3), v.reshape(-1, 3)
     for j, body in enumerate(drags.body):
         resistance = drags.linear[j] + drags.quadratic[j] * np.hypot(*velocities[body, :2])
@@ -68,7 +68,7 @@ def add_forces_twin(drags, t, q, v, latched, forces, pair_out, power, complete):
 
 
 @numba.njit(cache=True, inline="always")
-def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     """∂F/∂v of each drag: −(c + c_2|v|) I − c_2 v vᵀ/|v| on the centre (−c I at rest, where the quadratic term's
     derivative vanishes) and −(c_θ + 2c_θ2|ω|) on the spin; no dependence on q."""
     drags = parameters

@@ -120,7 +120,7 @@ def film_load(films, j, q, v):
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, forces, power):
     films = parameters
     for j in range(films.body.size):
         f_x, f_y, torque = film_load(films, j, q, v)
@@ -131,7 +131,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         power[1] -= f_x * v[i] + f_y * v[i + 1] + torque * v[i + 2]
 
 
-def add_forces_twin(films, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces_twin(films, t, q, v, forces, power):
     """The same forces through the library's functions called from Python (no compiled kernel)."""
     for j, body in enumerate(films.body):
         radius, length, clearance, viscosity = films.geometry[j]
@@ -151,7 +151,7 @@ def add_forces_twin(films, t, q, v, latched, forces, pair_out, power, complete):
 
 
 @numba.njit(cache=True, inline="always")
-def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     """∂F/∂q and ∂F/∂v of each film: its force's slopes in (e_x, e_y, v_x, v_y, Ω)
     (:func:`~bearing_mbs.fluid_film.closed_forms.short_bearing_force_jacobian`,
     :func:`~bearing_mbs.fluid_film.force_map.map_force_jacobian`) and its Couette torque's in ε and Ω; beyond

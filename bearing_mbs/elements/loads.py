@@ -39,7 +39,7 @@ def pack(loads) -> LoadArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, forces, power):
     loads = parameters
     for j in range(loads.body.size):
         scale = profile_value(loads.profile_times, loads.profile_values, loads.profile[j, 0], loads.profile[j, 1], t)
@@ -49,7 +49,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
             power[0] += scale * loads.vector[j, c] * v[i]
 
 
-def add_forces_twin(loads, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces_twin(loads, t, q, v, forces, power):
     body_forces, velocities = forces.reshape(-1, 3), v.reshape(-1, 3)
     for j, body in enumerate(loads.body):
         start, count = loads.profile[j]
@@ -59,7 +59,7 @@ def add_forces_twin(loads, t, q, v, latched, forces, pair_out, power, complete):
 
 
 @numba.njit(cache=True, inline="always")
-def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     """Nothing: a profile load depends on time alone."""
     pass
 

@@ -39,7 +39,7 @@ def pack(servos) -> ServoArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, forces, power):
     servos = parameters
     for j in range(servos.body.size):
         speed = profile_value(servos.profile_times, servos.profile_values, servos.profile[j, 0],
@@ -50,7 +50,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         power[0] += torque * v[i]
 
 
-def add_forces_twin(servos, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces_twin(servos, t, q, v, forces, power):
     body_forces, velocities = forces.reshape(-1, 3), v.reshape(-1, 3)
     for j, body in enumerate(servos.body):
         start, count = servos.profile[j]
@@ -61,7 +61,7 @@ def add_forces_twin(servos, t, q, v, latched, forces, pair_out, power, complete)
 
 
 @numba.njit(cache=True, inline="always")
-def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     """∂T/∂ω = −gain on each driven body's spin."""
     servos = parameters
     for j in range(servos.body.size):

@@ -94,7 +94,7 @@ def _flexible_joint(joints, j, displacement):
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, forces, power):
     joints = parameters
     for j in range(joints.body.size):
         i = 3 * joints.body[j]
@@ -186,7 +186,7 @@ def _state(joints, j, q):
     return load, tangent
 
 
-def add_forces_twin(joints, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces_twin(joints, t, q, v, forces, power):
     for j in range(joints.body.size):
         i = 3 * joints.body[j]
         load, stiffness = _state(joints, j, q)
@@ -212,7 +212,7 @@ def potential_energy(joints, position, pair_output):
 
 
 @numba.njit(cache=True, inline="always")
-def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     r"""With the body's force :math:`-(f + \beta K_t \dot x)`, f = Σ Bᵀ Q ŝ and :math:`K_t = \partial f/\partial x`:
     ∂F/∂v = −β K_t and ∂F/∂q = −K_t − β ∂(K_t ẋ)/∂x. Per diagonal the Hessian of its potential is
     :math:`H = a\,ŝŝ^T + b\,I` with a = Q′ − Q/|s|, b = Q/|s| (Q = Kδ^{3/2}, Q′ = 1.5Kδ^{1/2}), whose derivative

@@ -41,7 +41,7 @@ def pack(unbalances) -> UnbalanceArrays:
 
 
 @numba.njit(cache=True, inline="always")
-def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces(parameters, t, q, v, forces, power):
     unbalances = parameters
     for j in range(unbalances.body.size):
         i = 3 * unbalances.body[j]
@@ -53,7 +53,7 @@ def add_forces(parameters, t, q, v, latched, forces, pair_out, power, complete):
         power[0] += f_x * v[i] + f_y * v[i + 1]
 
 
-def add_forces_twin(unbalances, t, q, v, latched, forces, pair_out, power, complete):
+def add_forces_twin(unbalances, t, q, v, forces, power):
     for j, body in enumerate(unbalances.body):
         angle = q[3 * body + 2] + unbalances.phase[j]
         force = unbalances.moment[j] * v[3 * body + 2] ** 2 * np.array([np.cos(angle), np.sin(angle)])
@@ -62,7 +62,7 @@ def add_forces_twin(unbalances, t, q, v, latched, forces, pair_out, power, compl
 
 
 @numba.njit(cache=True, inline="always")
-def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_velocity):
+def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     """The rotating force m e ω² (cos, sin)(θ + φ): ∂/∂θ turns it a quarter turn, ∂/∂ω is 2/ω of it."""
     unbalances = parameters
     for j in range(unbalances.body.size):

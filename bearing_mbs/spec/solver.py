@@ -84,7 +84,7 @@ class ExudynSolver:
     ``compiled`` (the numba kernel in one ObjectGenericODE2), ``python`` (its numpy twin) or ``native``
     (Exudyn's ObjectContactSphereSphere, normal force only). spectral_radius: generalized-alpha ρ∞ in [0, 1].
     jacobian: implicit methods only, one of :data:`JACOBIANS`; ``analytic`` needs every force element of the
-    scene to have one (the built-in kinds do) and falls back to ``numerical`` for a kind registered from outside.
+    scene to have one (the built-in kinds do) and falls back to ``numerical`` for a kind without one.
     """
 
     method: str = methods.GENERALIZED_ALPHA.name
