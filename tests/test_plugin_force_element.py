@@ -33,7 +33,11 @@ def checks(*arguments) -> str:
     return run.stdout
 
 
+@pytest.mark.slow
 def test_a_spring_registered_from_outside_runs_on_both_engines():
+    """Compiled (about a minute of compilation for the test's own scene type, on every clean machine: with the long
+    studies). The default suite holds the same path: the built-in kinds go through the one dispatch every compiled
+    run uses, and ``tests/test_guide_force_element.py`` adds a kind through it, as Python, on both engines."""
     output = checks()
     assert re.search(r"\b6 passed", output), output[-3000:]
 
