@@ -5,19 +5,19 @@ from __future__ import annotations
 
 import functools
 
-from bearing_mbs.cli.options import add_output, add_overrides, exit_code, names, numbers, output_directory
+from bearing_mbs.cli.options import (
+    add_output,
+    add_overrides,
+    exit_code,
+    names,
+    numbers,
+    output_directory,
+    progress_meter,
+)
 from bearing_mbs.cli.static import print_outcome
 from bearing_mbs.models import MODELS
 from bearing_mbs.models.protocol import CommandLine
 from bearing_mbs.studies.services import SERVICES
-
-
-def progress_meter(quiet: bool):
-    """A progress bar on the terminal, or no progress with ``--quiet``."""
-    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
-
-    return ProgressMeter() if quiet else TqdmProgress()
-
 
 #: What the command line lends the models' commands.
 COMMAND_LINE = CommandLine(services=SERVICES, add_output=add_output, add_overrides=add_overrides,

@@ -23,6 +23,13 @@ def load_with_engine(args):
     return load_spec(args.scenario, list(args.set) + ([f"solver.engine={args.engine}"] if args.engine else []))
 
 
+def progress_meter(quiet: bool):
+    """A progress bar on the terminal, or no progress with ``--quiet``."""
+    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
+
+    return ProgressMeter() if quiet else TqdmProgress()
+
+
 def numbers(option: str, text: str) -> tuple[float, ...]:
     """A comma-separated list of numbers, e.g. ``--loads 68000,2000``."""
     try:

@@ -5,7 +5,14 @@ from __future__ import annotations
 import logging
 import sys
 
-from bearing_mbs.cli.options import add_output, add_overrides, exit_code, load_with_engine, output_directory
+from bearing_mbs.cli.options import (
+    add_output,
+    add_overrides,
+    exit_code,
+    load_with_engine,
+    output_directory,
+    progress_meter,
+)
 from bearing_mbs.spec import SpecError
 
 
@@ -36,7 +43,6 @@ def _run(args) -> int:
     SIGTERM (set by :func:`bearing_mbs.cli.main`); 2: bad input, nothing ran. Whatever was computed is written in
     every case but bad input."""
     from bearing_mbs.core.interrupt import stop_requested
-    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.models import MODELS
     from bearing_mbs.runner import run_spec, write_outputs
 
@@ -46,7 +52,7 @@ def _run(args) -> int:
         animated = [name for name, model in MODELS.items() if model.animate is not None]
         raise SpecError("--animate", spec.scenario.model, f"a model with an animation: {', '.join(animated)}")
     directory = output_directory(args)
-    scene, result = run_spec(spec, ProgressMeter() if args.quiet else TqdmProgress())
+    scene, result = run_spec(spec, progress_meter(args.quiet))
     if args.check_slip and result.completed and not stop_requested():
         from bearing_mbs.studies.spurious_slip import check_spurious_slip
 

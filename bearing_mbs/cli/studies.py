@@ -3,7 +3,7 @@ own studies are its commands (:attr:`bearing_mbs.models.Model.commands`, :mod:`b
 
 from __future__ import annotations
 
-from bearing_mbs.cli.options import add_output, add_overrides, names, output_directory
+from bearing_mbs.cli.options import add_output, add_overrides, names, output_directory, progress_meter
 from bearing_mbs.models import load_spec
 from bearing_mbs.spec import SpecError
 
@@ -26,11 +26,10 @@ def _add_convergence(commands) -> None:
 
 
 def _convergence(args) -> int:
-    from bearing_mbs.core.progress import ProgressMeter, TqdmProgress
     from bearing_mbs.studies.convergence import study
 
     spec = load_spec(args.scenario, args.set)
-    summary = study(spec, output_directory(args), ProgressMeter() if args.quiet else TqdmProgress())
+    summary = study(spec, output_directory(args), progress_meter(args.quiet))
     for target, best in summary["cheapest"].items():
         setting = "not reached" if best is None else (
             f"{best['engine']} {best['solver']} step={best['step'] or '-'} tolerance={best['tolerance'] or '-'} "
