@@ -55,25 +55,25 @@ class Controls(NamedTuple):
 
 class RungeKuttaTableau(NamedTuple):
     """An explicit Runge–Kutta method as arrays: stage coefficients a (s × s), weights b, nodes c, embedded
-    weights b_error (empty: fixed step), the order of the error estimate and the FSAL property."""
+    weights b_error (empty: fixed step) and the FSAL property (the order of the error estimate is the step-size
+    controller's, :mod:`bearing_mbs.engines.reference.step_control`)."""
 
     a: np.ndarray
     b: np.ndarray
     c: np.ndarray
     b_error: np.ndarray
-    error_order: int
     fsal: bool
 
 
 #: The tableau argument of the methods that have none.
-NO_TABLEAU = RungeKuttaTableau(np.zeros((0, 0)), np.zeros(0), np.zeros(0), np.zeros(0), 0, False)
+NO_TABLEAU = RungeKuttaTableau(np.zeros((0, 0)), np.zeros(0), np.zeros(0), np.zeros(0), False)
 
 
 def runge_kutta_tableau(tableau: ButcherTableau | None) -> RungeKuttaTableau:
     """The compiled form of ``tableau`` (:data:`NO_TABLEAU` for None)."""
     if tableau is None:
         return NO_TABLEAU
-    return RungeKuttaTableau(tableau.a, tableau.b, tableau.c, tableau.b_error, tableau.error_order, tableau.fsal)
+    return RungeKuttaTableau(tableau.a, tableau.b, tableau.c, tableau.b_error, tableau.fsal)
 
 
 class VerletCarry(NamedTuple):

@@ -19,8 +19,8 @@ class ButcherTableau:
     """Explicit RK method: stages ``a`` (strictly lower triangular), weights ``b``, nodes ``c``.
 
     ``b_error`` are the weights of the embedded solution (empty for fixed-step methods); ``order`` is the
-    order of ``b`` and ``error_order`` that of the embedded pair's error estimate (both from the method's entry in
-    :mod:`bearing_mbs.spec.methods`). ``fsal``: the last stage
+    order of ``b`` (from the method's entry in :mod:`bearing_mbs.spec.methods`, which also holds the order of the
+    embedded pair's error estimate, read by the step-size controller). ``fsal``: the last stage
     is evaluated at the new solution and can serve as the next step's first stage.
     """
 
@@ -30,7 +30,6 @@ class ButcherTableau:
     c: np.ndarray
     order: int
     b_error: np.ndarray = field(default_factory=lambda: np.zeros(0))
-    error_order: int = 0
     fsal: bool = False
 
     def __post_init__(self):
@@ -78,7 +77,6 @@ DOPRI5 = ButcherTableau(
     c=np.array([0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1, 1]),
     order=methods.DOPRI5.order,
     b_error=np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40]),
-    error_order=methods.DOPRI5.error_order,
     fsal=True,
 )
 
