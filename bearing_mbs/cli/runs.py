@@ -13,7 +13,6 @@ from bearing_mbs.cli.options import (
     output_directory,
     progress_meter,
 )
-from bearing_mbs.spec import SpecError
 
 
 def register(commands) -> dict:
@@ -47,10 +46,7 @@ def _run(args) -> int:
     from bearing_mbs.runner import run_spec, write_outputs
 
     spec = load_with_engine(args)
-    animate = MODELS[spec.scenario.model].animate
-    if args.animate and animate is None:
-        animated = [name for name, model in MODELS.items() if model.animate is not None]
-        raise SpecError("--animate", spec.scenario.model, f"a model with an animation: {', '.join(animated)}")
+    animate = MODELS.part(spec.scenario.model, "animate", "an animation", "--animate") if args.animate else None
     directory = output_directory(args)
     scene, result = run_spec(spec, progress_meter(args.quiet))
     if args.check_slip and result.completed and not stop_requested():

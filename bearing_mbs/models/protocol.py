@@ -21,6 +21,7 @@ from typing import Any
 from bearing_mbs.core.registry import Registry
 from bearing_mbs.core.result import Result
 from bearing_mbs.core.scene import Scene
+from bearing_mbs.spec import SpecError
 
 
 @dataclass(frozen=True)
@@ -195,3 +196,14 @@ class Model:
 
 class ModelRegistry(Registry[Model]):
     """Models by name. :meth:`register` adds one from outside the package (a plug-in, or a test)."""
+
+    def part(self, name: str, part: str, description: str, field: str = "scenario.model") -> Any:
+        """Model ``name``'s optional ``part`` (a field of :class:`Model` that may be None: ``animate``,
+        ``stability``, ``settling_check``, ``steady_balance``...). A model without it is refused before anything
+        runs: :class:`~bearing_mbs.spec.SpecError` naming ``field``, the model, and the models with ``description``
+        (what the caller needs, "a stability suite")."""
+        found = getattr(self[name], part)
+        if found is None:
+            having = [model.name for model in self.values() if getattr(model, part) is not None]
+            raise SpecError(field, name, f"a model with {description}: {', '.join(having)}")
+        return found

@@ -332,12 +332,7 @@ def _tolerance_walk(runner: CellRunner, tolerances: list[float]) -> dict:
 
 def suite(spec: Spec) -> StabilitySuite:
     """The stability suite of the scenario's model; raises :class:`SpecError` for a model without one."""
-    found = MODELS[spec.scenario.model].stability
-    if found is None:
-        with_suites = [name for name, model in MODELS.items() if model.stability is not None]
-        raise SpecError("scenario.model", spec.scenario.model,
-                        f"a model with a stability suite: {', '.join(with_suites)}")
-    return found
+    return MODELS.part(spec.scenario.model, "stability", "a stability suite")
 
 
 def case_spec(base: Spec, case: StabilityCase) -> Spec:

@@ -34,7 +34,6 @@ from pathlib import Path
 from bearing_mbs.models import MODELS, spec_from_mapping
 from bearing_mbs.models.loading import current_model_name
 from bearing_mbs.spec import SpecError, apply_override, read_scenario, to_mapping
-from bearing_mbs.spec.fields import require
 
 RESULT_FILE = "result.npz"
 
@@ -140,11 +139,7 @@ class SimulationModel(RunModel):
 def _model_part(spec, part: str, evaluator: str):
     """The part (a field of :class:`bearing_mbs.models.Model`) of the spec's model that ``evaluator`` needs;
     raises :class:`SpecError` for a model without it."""
-    found = getattr(MODELS[spec.scenario.model], part)
-    with_part = [name for name, model in MODELS.items() if getattr(model, part) is not None]
-    require(found is not None, "scenario.model", spec.scenario.model,
-            f"the {evaluator} evaluator needs a model with a {part.replace('_', ' ')}: {', '.join(with_part)}")
-    return found
+    return MODELS.part(spec.scenario.model, part, f"a {part.replace('_', ' ')} (the {evaluator} evaluator)")
 
 
 @dataclass(frozen=True)
