@@ -38,8 +38,12 @@ accelerations of the new state. A scene with a force element registered from out
 Jacobian, gets K and C by forward differences of its forces (2n evaluations). The matrix is sparse in the bodies
 and is factored by :mod:`~bearing_mbs.engines.reference.block_elimination`, body block by body block, so its cost
 grows linearly with the rollers. It is formed and factored when the step changes (modified Newton) and again when
-Newton stalls; the iteration stops when every coordinate's increment of position and velocity is below
-:data:`NEWTON_FRACTION` of its tolerance scale.
+Newton stalls. The iteration stops when the iterate's error, estimated from the last increment Δ and the observed
+contraction θ = ‖Δ_k‖/‖Δ_{k−1}‖ as θ/(1−θ)‖Δ_k‖ (the geometric tail of a contracting iteration: Hairer & Wanner
+1996, §IV.8, eq. 8.10), or the increment itself, is below :data:`NEWTON_FRACTION` of every coordinate's tolerance
+scale in position and velocity (the first iteration has no θ and stops on its increment alone). A modified Newton
+iteration contracts by θ ≈ 0.05 on the seed bearing, so the estimate saves about one iteration per step against
+the increment alone (3.9 → 3.0 iterations per step at 2e-5 s, docs/numerics.md).
 
 **Error and step control** (``generalized_alpha_adaptive``). The local error of the positions is estimated as
 :math:`e = (\beta - \tfrac16) h^2 (a_{n+1} - a_n)` (Zienkiewicz & Xie 1991, the Newmark family's leading term
@@ -250,7 +254,8 @@ def generalized_alpha_step(packed, controls, error_control, t, h, landing, h_ada
                 size = max(size, abs(slope_q * increment[i]) / (tolerance * (1.0 + abs(q_new[i]))),
                            abs(slope_v * increment[i]) / (tolerance * (1.0 + abs(v_new[i]))))
             counters[NEWTON_ITERATIONS] += 1
-            if size <= NEWTON_FRACTION:
+            rate = size / previous  # θ; 0 on the first iteration
+            if size <= NEWTON_FRACTION or 0.0 < rate < 1.0 and rate / (1.0 - rate) * size <= NEWTON_FRACTION:
                 converged = True
                 break
             if not size <= CONTRACTIVITY * previous:  # too slow, diverging or not finite
