@@ -8,6 +8,8 @@ References and tolerances:
 * the reference engine's generalized-α (h = 1e-5 s, its own Newton on the same Jacobian, the constraint cage by
   projection) against the explicit RK4 at its advised step (8e-7 s, docs/numerics.md) and against Exudyn: the
   tolerances of tests/test_bearing_engines.py, cage speed within 0.5 %, largest roller load within 1 %;
+* the fastest setting of the revolution benchmark (1e-4 s, ρ∞ = 0.3, Newton tolerance 1e-3) against the same two,
+  at the same tolerances;
 * the reference engine's sparse Newton step (block elimination) against the dense formula of its Newton matrix,
   written out with numpy, on the seed bearing's own Jacobian: 1e-9 of the increment.
 """
@@ -32,6 +34,14 @@ SETTINGS = {
     "implicit": ["solver.engine=reference", "solver.reference.method=generalized_alpha",
                  "solver.reference.step=1e-5", "solver.reference.tolerance=1e-6"],
     "explicit": ["solver.engine=reference", "solver.reference.method=rk4", "solver.reference.step=8e-7"],
+    # the fastest setting of benchmarks/out/bearing_revolution.json: ten times the step, strong numerical damping
+    "implicit_fast": ["solver.engine=reference", "solver.reference.method=generalized_alpha",
+                      "solver.reference.step=1e-4", "solver.reference.tolerance=1e-3",
+                      "solver.reference.spectral_radius=0.3"],
+    # a step that does not divide the output interval (1e-4 s)
+    "implicit_odd_step": ["solver.engine=reference", "solver.reference.method=generalized_alpha",
+                          "solver.reference.step=7e-5", "solver.reference.tolerance=1e-3",
+                          "solver.reference.spectral_radius=0.3"],
 }
 
 
@@ -59,13 +69,24 @@ def test_exudyn_with_the_analytic_jacobian_solves_the_same_steps(runs):
     assert analytic.stats.force_evaluations < numerical.stats.force_evaluations
 
 
+@pytest.mark.parametrize("implicit_run", ["implicit", "implicit_fast"])
 @pytest.mark.parametrize("against", ["explicit", "exudyn_analytic"])
-def test_reference_generalized_alpha_agrees_on_the_lubricated_bearing(runs, against):
-    implicit, other = summarize(*runs["implicit"]), summarize(*runs[against])
+def test_reference_generalized_alpha_agrees_on_the_lubricated_bearing(runs, against, implicit_run):
+    implicit, other = summarize(*runs[implicit_run]), summarize(*runs[against])
     assert implicit["cage_speed_ratio"] == pytest.approx(other["cage_speed_ratio"], rel=5e-3)
     assert implicit["max_roller_load"] == pytest.approx(other["max_roller_load"], rel=1e-2)
-    stats = runs["implicit"][2].stats
+    stats = runs[implicit_run][2].stats
     assert stats.newton_iterations >= stats.steps > 0 and stats.jacobian_evaluations > 0
+
+
+def test_a_fixed_step_that_does_not_divide_the_output_interval_keeps_newtons_matrix():
+    """7e-5 s in 1e-4 s output intervals: the driver takes two equal steps of 5e-5 s per interval, so the matrix
+    formed for the first serves the run (with a 7e-5 s step and a 3e-5 s landing step it was formed on every step,
+    their ratio 2.3 being outside the reuse window of 1.4)."""
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", SHORT + SETTINGS["implicit_odd_step"])
+    stats = simulate(build_scene(spec), spec.solver, spec.scenario.end_time).stats
+    assert stats.steps >= 2 * 100  # two per output interval, and the retries of the load's first impact
+    assert stats.jacobian_evaluations < stats.steps / 5
 
 
 def newton_step_both_ways(scene, result, slope_q=4e-11, slope_v=1e-5):

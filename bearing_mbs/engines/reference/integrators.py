@@ -134,6 +134,10 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                 # land on the output instant, also when rounding left it a hair beyond one step
                 landing = t_target - t <= h_adaptive * (1.0 + LANDING_SLACK)
                 h = t_target - t if landing else h_adaptive
+                if implicit is not None and not adaptive and not landing:
+                    # fixed-step generalized-α: equal steps to the output instant; a step that does not divide the
+                    # interval would alternate with a short landing step, and each change forms Newton's matrix
+                    h = (t_target - t) / math.ceil((t_target - t) / h_adaptive * (1.0 - 1e-9))
             else:
                 wanted = controls.step
                 if method == CENTRAL_DIFFERENCE:
