@@ -2,7 +2,10 @@
 baseline and the document's scheme: cost, cage-speed error and converged slips, all measured in one run.
 
 The lubricated model (seed_hss_steady's default variant: EHL raceways, churning drag, cage on its land film,
-constraint cage) is measured first, the dry model (variant ``dry``: erf friction, penalty cage) second. Each run
+constraint cage) is measured first, at the document's zero clearance (the case the targets below were set on), the
+dry model (variant ``dry``: erf friction, penalty cage) second, and the lubricated model at its shipped operating
+clearance (69.5 µm) last, with fewer settings: there the ring drops through the clearance onto its rollers when
+the load is applied at t = 0, and the error window is an impact transient. Each run
 integrates 0–0.04 s from the scenario's start (load applied at t = 0) after a short warm-up (compilation
 excluded). Errors are those of docs/numerics.md, against the scenario's fine reference (``[convergence]
 reference``: RK4 at 5e-8 s lubricated, 2.5e-8 s dry) over its ``[convergence]`` window, where two correct runs
@@ -20,10 +23,10 @@ scaled with Z at equal roller size and roller load, so each roller's physics is 
 cost ∝ Z^p fitted to it, and that of the cost per force evaluation (the algorithm's work, apart from the
 evaluations and Jacobians that more rollers' contact events ask for).
 
-Targets (the implicit-integrator issue): best ≥ 10× faster than baseline; Exudyn generalized-alpha with the analytic
-Jacobian ≥ 3× faster than baseline; best ≥ 100× faster than the document's scheme at equal or better cage-speed
-error. Timings are compared as ratios of one run, on a shared machine; each setting runs twice and its faster run
-counts.
+Targets (the speed issue, on the lubricated model): the best setting ≤ 0.04 s per revolution (faster than the
+bearing turns) and ≥ 50× faster than baseline; Exudyn's best within 2.5× of the reference engine's best, each at
+cage-speed error ≤ 1e-3 with converged slips, and ≥ 20× faster than baseline. Timings are compared as ratios of one
+run, on a shared machine; each setting runs twice and its faster run counts.
 """
 
 from __future__ import annotations
@@ -47,14 +50,17 @@ TARGET_ERROR = 1e-3
 REPEATS = 2
 
 
-def exudyn(step: float, jacobian: str = "analytic") -> list[str]:
-    return ["solver.engine=exudyn", "solver.exudyn.method=generalized_alpha", f"solver.exudyn.step={step}",
-            f"solver.exudyn.jacobian={jacobian}"]
+def exudyn(step: float, jacobian: str = "analytic", spectral_radius: float | None = None) -> list[str]:
+    settings = ["solver.engine=exudyn", "solver.exudyn.method=generalized_alpha", f"solver.exudyn.step={step}",
+                f"solver.exudyn.jacobian={jacobian}"]
+    return settings + ([f"solver.exudyn.spectral_radius={spectral_radius}"] if spectral_radius is not None else [])
 
 
-def reference(method: str, step: float, tolerance: float | None = None) -> list[str]:
+def reference(method: str, step: float, tolerance: float | None = None,
+              spectral_radius: float | None = None) -> list[str]:
     settings = ["solver.engine=reference", f"solver.reference.method={method}", f"solver.reference.step={step}"]
-    return settings + ([f"solver.reference.tolerance={tolerance}"] if tolerance else [])
+    settings += [f"solver.reference.tolerance={tolerance}"] if tolerance else []
+    return settings + ([f"solver.reference.spectral_radius={spectral_radius}"] if spectral_radius is not None else [])
 
 
 #: name → overrides, per model. The steps bracket where each setting stops meeting the 1e-3 target.
@@ -70,14 +76,39 @@ SETTINGS = {
     "reference_generalized_alpha_1e-4": reference("generalized_alpha", 1e-4, 1e-6),
     "reference_generalized_alpha_adaptive_1e-6": reference("generalized_alpha_adaptive", 1e-4, 1e-6),
     "reference_generalized_alpha_adaptive_1e-8": reference("generalized_alpha_adaptive", 1e-4, 1e-8),
+    # strong numerical damping (rho_inf = 0.3) and a Newton tolerance at the target error: the steps the
+    # contact modes' high-frequency remnants no longer hold back
+    "exudyn_generalized_alpha_analytic_rho0.3_5e-5": exudyn(5e-5, spectral_radius=0.3),
+    "exudyn_generalized_alpha_analytic_rho0.3_1e-4": exudyn(1e-4, spectral_radius=0.3),
+    "reference_generalized_alpha_rho0.3_5e-5": reference("generalized_alpha", 5e-5, 1e-3, 0.3),
+    "reference_generalized_alpha_rho0.3_1e-4": reference("generalized_alpha", 1e-4, 1e-3, 0.3),
+    "reference_generalized_alpha_rho0.3_2e-4": reference("generalized_alpha", 2e-4, 1e-3, 0.3),
     "document": reference("central_difference", DOCUMENT_STEP),
 }
-MODELS = ("lubricated", "dry")
+#: model → its scenario overrides. ``lubricated`` runs at the document's zero clearance, the case the speed targets
+#: were set on; ``lubricated_operating_clearance`` is the shipped variant, whose ring drops through 69.5 µm onto its
+#: rollers when the load is applied at t = 0: an impact transient in the error window.
+MODELS = {
+    "lubricated": ["scenario.variant=lubricated", "bearing.diametral_clearance=0"],
+    "dry": ["scenario.variant=dry"],
+    "lubricated_operating_clearance": ["scenario.variant=lubricated"],
+}
+#: The settings run on the operating clearance (all settings run on the others).
+OPERATING_CLEARANCE_SETTINGS = ("baseline", "exudyn_generalized_alpha_analytic_5e-5",
+                                "exudyn_generalized_alpha_analytic_rho0.3_1e-4", "reference_generalized_alpha_1e-5",
+                                "reference_generalized_alpha_2e-5", "reference_generalized_alpha_rho0.3_5e-5",
+                                "reference_generalized_alpha_rho0.3_1e-4", "reference_generalized_alpha_adaptive_1e-8")
 
 
 def spec_of(model: str, overrides: list[str]):
-    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [f"scenario.variant={model}", *COMMON, *overrides])
+    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [*MODELS[model], *COMMON, *overrides])
     return spec, build_scene(spec)
+
+
+def settings_of(model: str) -> dict:
+    if model == "lubricated_operating_clearance":
+        return {name: SETTINGS[name] for name in OPERATING_CLEARANCE_SETTINGS}
+    return SETTINGS
 
 
 def fine_reference(model: str):
@@ -135,21 +166,31 @@ def speed_up(runs: dict, slow: str, fast: str | None) -> float | None:
     return runs[slow]["wall_time_s_per_revolution"] / runs[fast]["wall_time_s_per_revolution"]
 
 
+def key_of(model: str, name: str) -> str:
+    return name if model == next(iter(MODELS)) else f"{model}/{name}"
+
+
 def summarize(runs: dict, model: str) -> dict:
-    prefix = "" if model == MODELS[0] else f"{model}/"
     best = cheapest(runs, model)
     best_exudyn = cheapest(runs, model, prefix="exudyn_generalized_alpha_analytic")
-    document = f"{prefix}document"
-    at_document_error = cheapest(runs, model, error=runs[document]["cage_speed_error"])
-    return {
+    best_reference = cheapest(runs, model, prefix="reference_")
+    baseline = key_of(model, "baseline")
+    summary = {
         "best": best,
+        "best_wall_time_s_per_revolution": runs[best]["wall_time_s_per_revolution"] if best else None,
         "best_exudyn_analytic": best_exudyn,
-        "best_at_document_error": at_document_error,
-        "speed_up_best_over_baseline": speed_up(runs, f"{prefix}baseline", best),
-        "speed_up_exudyn_analytic_over_baseline": speed_up(runs, f"{prefix}baseline", best_exudyn),
-        "speed_up_over_document_at_its_error": speed_up(runs, document, at_document_error),
-        "speed_up_best_over_document": speed_up(runs, document, best),
+        "best_reference": best_reference,
+        "speed_up_best_over_baseline": speed_up(runs, baseline, best),
+        "speed_up_exudyn_analytic_over_baseline": speed_up(runs, baseline, best_exudyn),
+        "exudyn_best_over_reference_best": speed_up(runs, best_exudyn, best_reference) if best_exudyn else None,
     }
+    document = key_of(model, "document")
+    if document in runs:
+        at_document_error = cheapest(runs, model, error=runs[document]["cage_speed_error"])
+        summary |= {"best_at_document_error": at_document_error,
+                    "speed_up_over_document_at_its_error": speed_up(runs, document, at_document_error),
+                    "speed_up_best_over_document": speed_up(runs, document, best)}
+    return summary
 
 
 def scaled_bearing(rollers: int) -> list[str]:
@@ -188,8 +229,8 @@ def scaling(model: str, overrides: list[str]) -> dict:
 
 def main() -> dict:
     report = {
-        "case": "seed_hss_steady, one shaft revolution (0.04 s) from the start; lubricated (constraint cage) and dry "
-                "(penalty cage)",
+        "case": "seed_hss_steady, one shaft revolution (0.04 s) from the start; lubricated (constraint cage) at zero "
+                "clearance, dry (penalty cage), lubricated at the operating clearance",
         "target_cage_speed_error": TARGET_ERROR,
         "fine_references": {},
         "runs": {},
@@ -204,8 +245,8 @@ def main() -> dict:
             "wall_time_s": truth.stats.wall_time_s, "steps": truth.stats.steps,
             "error_window_s": [spec.convergence.start, spec.convergence.end], "largest_slip_ratio": largest,
             "slip_error_bound": slip_bound}
-        for name, overrides in SETTINGS.items():
-            key = name if model == MODELS[0] else f"{model}/{name}"
+        for name, overrides in settings_of(model).items():
+            key = key_of(model, name)
             runs[key] = measure(model, overrides, truth, slip_bound)
             write("bearing_revolution", report)  # what is measured is kept, whatever happens next
             print(key, {k: runs[key][k] for k in ("status", "wall_time_s_per_revolution", "cage_speed_error",
@@ -213,18 +254,17 @@ def main() -> dict:
     summary = report["summary"] = {model: summarize(runs, model) for model in MODELS}
     lubricated = summary["lubricated"]
     report["targets"] = {
-        "best_over_baseline": {"value": lubricated["speed_up_best_over_baseline"], "target": ">= 10"},
-        "exudyn_analytic_over_baseline": {"value": lubricated["speed_up_exudyn_analytic_over_baseline"],
-                                          "target": ">= 3"},
-        "best_over_document_at_equal_error": {"value": lubricated["speed_up_over_document_at_its_error"],
-                                              "target": ">= 100"},
-        "dry_best_over_baseline": {"value": summary["dry"]["speed_up_best_over_baseline"], "target": ">= 10"},
-        "dry_best_over_document_at_equal_error": {"value": summary["dry"]["speed_up_over_document_at_its_error"],
-                                                  "target": ">= 100"},
+        "best_wall_time_s_per_revolution": {"value": lubricated["best_wall_time_s_per_revolution"],
+                                            "target": "<= 0.04"},
+        "best_over_baseline": {"value": lubricated["speed_up_best_over_baseline"], "target": ">= 50"},
+        "exudyn_best_over_reference_best": {"value": lubricated["exudyn_best_over_reference_best"],
+                                            "target": "<= 2.5"},
+        "exudyn_best_over_baseline": {"value": lubricated["speed_up_exudyn_analytic_over_baseline"],
+                                      "target": ">= 20"},
     }
     write("bearing_revolution", report)
     report["scaling"] = {}
-    for model in MODELS:  # the lubricated model's constraint cage against the dry model's penalty cage
+    for model in ("lubricated", "dry"):  # the lubricated model's constraint cage against the dry model's penalty cage
         if summary[model]["best"] is not None:
             report["scaling"][model] = scaling(model, SETTINGS[summary[model]["best"].split("/")[-1]])
             write("bearing_revolution", report)
