@@ -101,7 +101,8 @@ class ImplicitCarry(NamedTuple):
     differences, the step [s] the Newton matrix was formed for (inf: none yet), the factored Newton matrix
     (:class:`~bearing_mbs.engines.reference.block_elimination.BlockSystem`), the constraint rows it was formed
     with (C × 6), the constraints' multipliers [N] (Newton's iterate and the accepted state's), the constraint
-    rows, gaps [m] and residual of the iterate, and ∂F/∂q, ∂F/∂v (n × n each)."""
+    rows, gaps [m] and residual of the iterate, ∂F/∂q, ∂F/∂v (n × n each), and a copy of the accepted state's
+    acceleration, auxiliary acceleration, power and multipliers, to take a step back that the projection refuses."""
 
     acceleration: np.ndarray
     auxiliary: np.ndarray
@@ -121,6 +122,10 @@ class ImplicitCarry(NamedTuple):
     constraint_residual: np.ndarray
     stiffness: np.ndarray
     damping: np.ndarray
+    kept_acceleration: np.ndarray
+    kept_auxiliary: np.ndarray
+    kept_power: np.ndarray
+    kept_multiplier: np.ndarray
 
 
 class Workspace(NamedTuple):
@@ -181,7 +186,7 @@ def new_implicit_carry(coordinate_count: int, newton: BlockSystem) -> ImplicitCa
     return ImplicitCarry(np.zeros(n), np.zeros(n), np.zeros(2), np.zeros(1, dtype=np.int64),
                          np.zeros(1, dtype=np.int64), np.zeros(n), np.zeros(n), np.zeros(n), np.full(1, np.inf),
                          newton, np.zeros((c, 6)), np.zeros(c), np.zeros(c), np.zeros((c, 6)), np.zeros(c), np.zeros(c),
-                         np.zeros((n, n)), np.zeros((n, n)))
+                         np.zeros((n, n)), np.zeros((n, n)), np.zeros(n), np.zeros(n), np.zeros(2), np.zeros(c))
 
 
 def new_runge_kutta_stages(stage_count: int, coordinate_count: int) -> RungeKuttaStages:

@@ -184,6 +184,29 @@ def newton_residual(packed, carry, free, q, v):
         carry.constraint_residual[k] = times_rows(constraints, rows, a, k) - carry.constraint_residual[k]
 
 
+@numba.njit(cache=True)
+def keep_accepted(carry):
+    """Copy the accepted state's memory (acceleration, auxiliary acceleration, power, multipliers) aside."""
+    copy_into(carry.kept_acceleration, carry.acceleration)
+    copy_into(carry.kept_auxiliary, carry.auxiliary)
+    copy_into(carry.kept_power, carry.power)
+    copy_into(carry.kept_multiplier, carry.accepted_multiplier)
+
+
+@numba.njit(cache=True)
+def take_back(carry, t, h, counters):
+    """Undo an accepted step that a later check refused (the constraint projection): the memory of
+    :func:`keep_accepted` restored, the step counted as rejected. Returns the step to retry with, NEWTON_RETRY of
+    ``h`` [s], or 0 when that would not advance t."""
+    copy_into(carry.acceleration, carry.kept_acceleration)
+    copy_into(carry.auxiliary, carry.kept_auxiliary)
+    copy_into(carry.power, carry.kept_power)
+    copy_into(carry.accepted_multiplier, carry.kept_multiplier)
+    counters[REJECTED] += 1
+    shorter = NEWTON_RETRY * h
+    return 0.0 if underflows(shorter, t) else shorter
+
+
 @numba.njit(cache=True, inline="always")
 def _state_of(a, fixed_q, fixed_v, slope_q, slope_v, q, v):
     """q_{n+1} = fixed_q + slope_q a and v_{n+1} = fixed_v + slope_v a of the iterate a, into q, v."""

@@ -50,7 +50,7 @@ from bearing_mbs.engines.reference.codes import (
 from bearing_mbs.engines.reference.constraints import length_scale, project_positions, project_velocities
 from bearing_mbs.engines.reference.copies import copy_into
 from bearing_mbs.engines.reference.dynamics import COMPLETE, CONSTRAINED, PARTIAL, accelerations
-from bearing_mbs.engines.reference.generalized_alpha import generalized_alpha_step
+from bearing_mbs.engines.reference.generalized_alpha import generalized_alpha_step, keep_accepted, take_back
 from bearing_mbs.engines.reference.runge_kutta import reuse_last_stage, runge_kutta_acceptance, runge_kutta_stages
 from bearing_mbs.engines.reference.velocity_verlet import velocity_verlet_drift, velocity_verlet_kick
 
@@ -149,6 +149,8 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                 landing = steps_left == 1
 
             if implicit is not None:
+                if has_constraints:
+                    keep_accepted(implicit)
                 status, accepted, h_adaptive, work_supplied, work_dissipated = generalized_alpha_step(
                     packed, controls, adaptive, t, h, landing, h_adaptive, state, implicit, bool(ready), workspace,
                     output.counters)
@@ -191,6 +193,11 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                 violation = project_positions(packed.constraints, packed.inverse_mass, q_new, scale,
                                               workspace.constraint_system)
                 if not violation <= PROJECTION_ACCEPTANCE * scale:
+                    if implicit is not None:  # too long a step for the projection: retried shorter, as Newton's failure
+                        shorter = take_back(implicit, t, h, output.counters)
+                        if shorter > 0.0:
+                            h_adaptive, ready = shorter, True
+                            continue
                     status = PROJECTION_FAILED
                     break
                 if method != CENTRAL_DIFFERENCE:  # its velocity is the backward difference below
