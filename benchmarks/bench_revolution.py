@@ -20,6 +20,12 @@ scaled with Z at equal roller size and roller load, so each roller's physics is 
 cost ∝ Z^p fitted to it, and that of the cost per force evaluation (the algorithm's work, apart from the
 evaluations and Jacobians that more rollers' contact events ask for).
 
+The measured settings also become the bearing model's work–precision tables, from which ``[solver] tolerance`` chooses
+a run's setting (bearing_mbs/models/cylindrical_roller/work_precision.json, :mod:`bearing_mbs.numerics.work_precision`):
+each setting's engine section, cage-speed error, converged slips and cost per simulated second, with the
+measurement's date, machine and commit. ``python benchmarks/bench_revolution.py`` measures and writes both;
+``--table-only`` writes the tables again from benchmarks/out/bearing_revolution.json without measuring.
+
 Targets (the implicit-integrator issue): best ≥ 10× faster than baseline; Exudyn generalized-alpha with the analytic
 Jacobian ≥ 3× faster than baseline; best ≥ 100× faster than the document's scheme at equal or better cage-speed
 error. Timings are compared as ratios of one run, on a shared machine; each setting runs twice and its faster run
@@ -28,16 +34,22 @@ counts.
 
 from __future__ import annotations
 
+import argparse
+import json
 import math
+import subprocess
+from pathlib import Path
 
 import numpy as np
 
 from bearing_mbs.engines import simulate
-from bearing_mbs.models import build_scene, load_spec
+from bearing_mbs.models import MODELS, build_scene, load_spec
+from bearing_mbs.numerics.work_precision import MeasuredSetting, WorkPrecisionTable, write_tables
+from bearing_mbs.spec import to_mapping
 from bearing_mbs.studies.convergence import errors, reference_scales, run_setting
 from bearing_mbs.studies.numerics_report import sound_slip_bound
 
-from common import SCENARIOS, write
+from common import OUT, SCENARIOS, machine, write
 
 REVOLUTION = 2 * math.pi / (1500 * 2 * math.pi / 60)  # 0.04 s
 DOCUMENT_STEP = 1 / 1.8e6
@@ -72,11 +84,17 @@ SETTINGS = {
     "reference_generalized_alpha_adaptive_1e-8": reference("generalized_alpha_adaptive", 1e-4, 1e-8),
     "document": reference("central_difference", DOCUMENT_STEP),
 }
-MODELS = ("lubricated", "dry")
+VARIANTS = ("lubricated", "dry")
+#: The model whose work–precision tables this benchmark writes.
+MODEL = "cylindrical_roller"
+REPOSITORY = Path(__file__).resolve().parents[1]
+
+
+SCENARIO = SCENARIOS / "seed_hss_steady.toml"
 
 
 def spec_of(model: str, overrides: list[str]):
-    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [f"scenario.variant={model}", *COMMON, *overrides])
+    spec = load_spec(SCENARIO, [f"scenario.variant={model}", *COMMON, *overrides])
     return spec, build_scene(spec)
 
 
@@ -102,6 +120,7 @@ def measure(model: str, overrides: list[str], truth, slip_bound: float) -> dict:
     norms = errors(spec, scene, result, truth) if result.success else {}
     return {
         "model": model,
+        "settings": to_mapping(spec.solver.active),
         "status": result.status,
         "wall_time_s_per_revolution": stats.wall_time_s,
         "cage_speed_error": norms.get("cage_speed", math.nan),
@@ -136,7 +155,7 @@ def speed_up(runs: dict, slow: str, fast: str | None) -> float | None:
 
 
 def summarize(runs: dict, model: str) -> dict:
-    prefix = "" if model == MODELS[0] else f"{model}/"
+    prefix = "" if model == VARIANTS[0] else f"{model}/"
     best = cheapest(runs, model)
     best_exudyn = cheapest(runs, model, prefix="exudyn_generalized_alpha_analytic")
     document = f"{prefix}document"
@@ -186,16 +205,77 @@ def scaling(model: str, overrides: list[str]) -> dict:
             "cost_per_evaluation_exponent_in_rollers": exponent("microseconds_per_force_evaluation")}
 
 
+def git(*arguments: str) -> str:
+    return subprocess.run(["git", *arguments], cwd=REPOSITORY, capture_output=True, text=True, check=True).stdout.strip()
+
+
+def commit() -> dict:
+    """The commit the measurement runs on, and whether the work tree differs from it."""
+    return {"commit": git("rev-parse", "HEAD"), "work_tree_modified": bool(git("status", "--porcelain", "--",
+                                                                             "bearing_mbs"))}
+
+
+def tables(report: dict, command: str) -> Path:
+    """The bearing model's work–precision tables from ``report`` (this benchmark's figures), written where its
+    model record says (:class:`bearing_mbs.models.protocol.WorkPrecisionData`)."""
+    provenance = {"date": report["machine"]["date"], "machine": report["machine"], "command": command,
+                  **report.get("measured_at", {})}
+    written = []
+    for model in VARIANTS:
+        prefix = "" if model == VARIANTS[0] else f"{model}/"
+        spec, _ = spec_of(model, [])
+        reference = spec.convergence.reference
+        settings = []
+        for name, overrides in SETTINGS.items():
+            run = report["runs"][prefix + name]
+            section = run.get("settings") or to_mapping(spec_of(model, overrides)[0].solver.active)
+            engine = spec_of(model, overrides)[0].solver.engine
+            settings.append(MeasuredSetting(
+                name=name, engine=engine, settings=section, cage_speed_error=run["cage_speed_error"],
+                slips_converged=run["slips_converged"], status=run["status"],
+                cost=run["wall_time_s_per_revolution"] / REVOLUTION))
+        fine = report["fine_references"][model]
+        measured_on = {
+            "scenario": spec.scenario.name, "variant": model, "speed_rpm": spec.drive.speed_rpm,
+            "radial_load_N": spec.load.radial, "simulated_s": [0.0, REVOLUTION],
+            "error_window_s": fine["error_window_s"],
+            "reference": f"{reference.engine} {reference.method} at {reference.steps[0]:g} s",
+            "slip_error_bound": fine["slip_error_bound"],
+            "cost": "the faster of two runs' wall time per simulated second, compilation excluded",
+        }
+        written.append(WorkPrecisionTable(model, measured_on, provenance, tuple(settings)))
+    path = MODELS[MODEL].work_precision.path
+    write_tables(path, written, "Measured work-precision tables of the cylindrical roller bearing, one per variant "
+                                "(written by benchmarks/bench_revolution.py; do not edit by hand)")
+    print(f"wrote {path}")
+    return path
+
+
+def tables_from_file() -> Path:
+    """The tables from the last measurement (benchmarks/out/bearing_revolution.json), without measuring. For a report
+    from before the commit was recorded, the provenance names the commit that holds its figures and the commits
+    that changed the scenario since (the tables then describe the scenario as it was)."""
+    path = OUT / "bearing_revolution.json"
+    report = json.loads(path.read_text())
+    if "measured_at" not in report:
+        committed = git("log", "-1", "--format=%H", "--", str(path.relative_to(REPOSITORY)))
+        changed = git("log", "--format=%h", f"{committed}..HEAD", "--", str(SCENARIO.relative_to(REPOSITORY)))
+        report["measured_at"] = {"commit": None, "figures_committed_in": committed,
+                                 "scenario_changed_since_by": changed.split()}
+    return tables(report, "python benchmarks/bench_revolution.py --table-only")
+
+
 def main() -> dict:
     report = {
         "case": "seed_hss_steady, one shaft revolution (0.04 s) from the start; lubricated (constraint cage) and dry "
                 "(penalty cage)",
         "target_cage_speed_error": TARGET_ERROR,
+        "measured_at": commit(),
         "fine_references": {},
         "runs": {},
     }
     runs = report["runs"]
-    for model in MODELS:
+    for model in VARIANTS:
         truth = fine_reference(model)
         spec, scene = spec_of(model, [])
         largest = reference_scales(spec, scene, truth)["reference_largest_slip"]
@@ -205,12 +285,12 @@ def main() -> dict:
             "error_window_s": [spec.convergence.start, spec.convergence.end], "largest_slip_ratio": largest,
             "slip_error_bound": slip_bound}
         for name, overrides in SETTINGS.items():
-            key = name if model == MODELS[0] else f"{model}/{name}"
+            key = name if model == VARIANTS[0] else f"{model}/{name}"
             runs[key] = measure(model, overrides, truth, slip_bound)
             write("bearing_revolution", report)  # what is measured is kept, whatever happens next
             print(key, {k: runs[key][k] for k in ("status", "wall_time_s_per_revolution", "cage_speed_error",
                                                   "slips_converged")})
-    summary = report["summary"] = {model: summarize(runs, model) for model in MODELS}
+    summary = report["summary"] = {model: summarize(runs, model) for model in VARIANTS}
     lubricated = summary["lubricated"]
     report["targets"] = {
         "best_over_baseline": {"value": lubricated["speed_up_best_over_baseline"], "target": ">= 10"},
@@ -223,8 +303,9 @@ def main() -> dict:
                                                   "target": ">= 100"},
     }
     write("bearing_revolution", report)
+    tables({**report, "machine": machine()}, "python benchmarks/bench_revolution.py")
     report["scaling"] = {}
-    for model in MODELS:  # the lubricated model's constraint cage against the dry model's penalty cage
+    for model in VARIANTS:  # the lubricated model's constraint cage against the dry model's penalty cage
         if summary[model]["best"] is not None:
             report["scaling"][model] = scaling(model, SETTINGS[summary[model]["best"].split("/")[-1]])
             write("bearing_revolution", report)
@@ -232,4 +313,7 @@ def main() -> dict:
 
 
 if __name__ == "__main__":
-    main()
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--table-only", action="store_true",
+                        help="write the work-precision tables from benchmarks/out/bearing_revolution.json, no runs")
+    tables_from_file() if parser.parse_args().table_only else main()
