@@ -191,25 +191,45 @@ def test_the_real_tables_are_described_and_provenanced():
     for table in tables.values():
         assert table.provenance["date"] and table.provenance["machine"] and table.provenance["command"]
         assert "commit" in table.provenance
-        for engine in (REFERENCE, EXUDYN):
-            assert any(s.engine == engine and s.sound for s in table.settings)
+        assert {s.engine for s in table.settings} == {REFERENCE, EXUDYN}
+        assert all(s.cost > 0 and s.settings["step"] > 0 for s in table.settings)
 
 
 def test_the_lubricated_seed_bearing_at_1e_3_runs_the_chosen_setting_within_it():
     """One real run: seed_hss_steady lubricated, ``solver.tolerance = 1e-3`` on the reference engine, to 20 ms; its
     mean cage speed over the scenario's error window (10-20 ms, ``[convergence]``) against the reference engine's
-    RK4 at its advised stability limit 1.6e-6 s (docs/numerics.md: 1.7e-11 from RK4 at 5e-8 s), a different method
-    and far finer than 1e-3: the error must be within the tolerance asked."""
+    RK4 at its advised stability limit 1.6e-6 s, a method of another order and far more accurate than 1e-3 (it agrees
+    with RK4 at 8e-7 s to 2.9e-7 on this window, measured 2026-11-27): the error must be within the tolerance
+    asked, whichever setting the table gives."""
     end = ["scenario.end_time=0.02", "analysis.start=0.01", "solver.output_interval=1e-4"]
     spec = lubricated(["solver.tolerance=1e-3", *end])
     scene, result = run_spec(spec)
     assert result.status == "success"
     summary = summarize(spec, scene, result)
     chosen = summary["solver_choice"]["settings"]
-    assert (result.method, result.step) == (chosen["method"], chosen["step"]) == (summary["solver"], summary["step"])
+    assert result.method == chosen["method"] == summary["solver"]
+    assert result.step == pytest.approx(chosen["step"], rel=1e-7) and summary["step"] == chosen["step"]
     assert (result.method, result.step) != (spec.solver.reference.method, spec.solver.reference.step)
     assert summary["solver_choice"]["expected_cage_speed_error"] <= 1e-3
     assert summary["solver_choice"]["source"] == "bearing_mbs/models/cylindrical_roller/work_precision.json"
-    finer = simulate(scene, solver_at(spec.solver, REFERENCE, RK4.name, 1.6e-6, largest_step=1.6e-6), spec.scenario.end_time)
+    finer = simulate(scene, solver_at(spec.solver, REFERENCE, RK4.name, 1.6e-6, largest_step=1.6e-6),
+                     spec.scenario.end_time)
+    assert finer.success
+    assert errors(spec, scene, result, finer)["cage_speed"] <= 1e-3
+
+
+@pytest.mark.slow
+def test_the_dry_seed_bearing_at_1e_3_on_exudyn_runs_within_it():
+    """The other engine and variant: seed_hss_steady dry, ``solver.tolerance = 1e-3`` on Exudyn, to 15 ms; its mean
+    cage speed over the dry variant's error window (5-15 ms) against the reference engine's RK4 at 1e-7 s (below the
+    dry bearing's advised RK4 limit 1.74e-7 s; docs/numerics.md: RK4 at 1.6e-7 s is within 1.1e-9 of RK4 at
+    2.5e-8 s)."""
+    spec = load_spec(SEED, ["scenario.variant=dry", "solver.engine=exudyn", "solver.tolerance=1e-3",
+                            "scenario.end_time=0.015", "analysis.start=0.005", "solver.output_interval=1e-4"])
+    scene, result = run_spec(spec)
+    assert result.success and result.engine == EXUDYN
+    assert summarize(spec, scene, result)["solver_choice"]["variant"] == "dry"
+    finer = simulate(scene, solver_at(spec.solver, REFERENCE, RK4.name, 1e-7, largest_step=1e-7),
+                     spec.scenario.end_time)
     assert finer.success
     assert errors(spec, scene, result, finer)["cage_speed"] <= 1e-3
