@@ -9,6 +9,7 @@ they name; and one real run of the lubricated seed bearing at 1e-3 against a fin
 
 from __future__ import annotations
 
+import json
 import math
 
 import pytest
@@ -126,6 +127,17 @@ def test_an_engine_without_a_sound_setting_is_refused():
     with pytest.raises(SpecError) as refused:
         choose(table, EXUDYN, 1e-3, bounds())
     assert refused.value.field == "solver.tolerance"
+
+
+def test_a_table_survives_its_file_as_strict_json(tmp_path):
+    path = work_precision.write_tables(tmp_path / "tables.json", [TABLE], "made up")
+    json.loads(path.read_text(), parse_constant=lambda name: pytest.fail(f"{name} in strict JSON"))
+    work_precision.read_tables.cache_clear()
+    table = work_precision.read_tables(path)["made_up"]
+    assert table == TABLE
+    failed = WorkPrecisionTable("nan", {}, {}, (setting("x", REFERENCE, RK4, 1e-6, math.nan, 1.0, status="failed"),))
+    path = work_precision.write_tables(tmp_path / "nan.json", [failed], "a failed run")
+    assert math.isnan(work_precision.read_tables(path)["nan"].settings[0].cage_speed_error)
 
 
 def lubricated(overrides=()):

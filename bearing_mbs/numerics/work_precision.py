@@ -40,6 +40,7 @@ from pathlib import Path
 
 from bearing_mbs.core.result import SUCCESS
 from bearing_mbs.core.scene import Scene
+from bearing_mbs.io.json import json_safe
 from bearing_mbs.models.registry import MODELS
 from bearing_mbs.numerics.advisor import advise
 from bearing_mbs.spec import SpecError, from_mapping, methods, to_mapping
@@ -59,8 +60,8 @@ CONTACT_STEP = "contact_step"
 @dataclass(frozen=True)
 class MeasuredSetting:
     """One measured setting of one engine: its ``[solver.<engine>]`` section as run (``settings``), its
-    ``cage_speed_error`` [-], whether its ``slips_converged``, its run's ``status`` and its ``cost`` [s of wall time
-    per s simulated]. ``name``: the measurement's name for it."""
+    ``cage_speed_error`` [-] (NaN where the run failed; null in the file), whether its ``slips_converged``, its run's
+    ``status`` and its ``cost`` [s of wall time per s simulated]. ``name``: the measurement's name for it."""
 
     name: str
     engine: str
@@ -104,8 +105,10 @@ class WorkPrecisionTable:
 
     @classmethod
     def from_dict(cls, data: dict) -> WorkPrecisionTable:
+        settings = ({**setting, "cage_speed_error": math.nan if setting["cage_speed_error"] is None
+                     else setting["cage_speed_error"]} for setting in data["settings"])
         return cls(data["variant"], data["measured_on"], data["provenance"],
-                   tuple(MeasuredSetting(**setting) for setting in data["settings"]))
+                   tuple(MeasuredSetting(**setting) for setting in settings))
 
 
 def write_tables(path: str | Path, tables: list[WorkPrecisionTable], description: str) -> Path:
@@ -113,7 +116,7 @@ def write_tables(path: str | Path, tables: list[WorkPrecisionTable], description
     path = Path(path)
     document = {"format": FORMAT, "description": description,
                 "tables": {table.variant: table.to_dict() for table in tables}}
-    path.write_text(json.dumps(document, indent=2) + "\n")
+    path.write_text(json.dumps(json_safe(document), indent=2, allow_nan=False) + "\n")
     read_tables.cache_clear()
     return path
 
