@@ -179,8 +179,9 @@ def test_without_a_tolerance_the_spec_runs_as_written():
 
 
 def test_the_chosen_setting_replaces_the_section_and_respects_the_real_advisor(monkeypatch):
-    # the made-up table as the bearing's: the seed bearing's own advisor caps rk4 (measured at 1e-6 s, above the
-    # lubricated bearing's recommended RK4 step?) or not; either way the run's step is min(1e-6, recommended)
+    # The made-up table as the lubricated bearing's, with the scene's own advisor: rk4 (measured at 1e-6 s, 3 s/s)
+    # runs at min(1e-6 s, the recommended step) for 3 s/s x the step ratio, and wins at 1e-3 if that is below
+    # "tight"'s 5 s/s, else "tight" wins (either way, worked out from the recommended step here).
     monkeypatch.setattr(work_precision, "read_tables", lambda path: {"lubricated": TABLE})
     spec = lubricated(["solver.tolerance=1e-3"])
     scene = build_scene(spec)
