@@ -23,6 +23,12 @@ scaled with Z at equal roller size and roller load, so each roller's physics is 
 cost ∝ Z^p fitted to it, and that of the cost per force evaluation (the algorithm's work, apart from the
 evaluations and Jacobians that more rollers' contact events ask for).
 
+The measured settings also become the bearing model's work–precision tables, from which ``[solver] tolerance`` chooses
+a run's setting (bearing_mbs/models/cylindrical_roller/work_precision.json, :mod:`bearing_mbs.numerics.work_precision`):
+each setting's engine section, cage-speed error, converged slips and cost per simulated second, with the
+measurement's date, machine and commit. ``python benchmarks/bench_revolution.py`` measures and writes both;
+``--table-only`` writes the tables again from benchmarks/out/bearing_revolution.json without measuring.
+
 Targets (the speed issue, on the lubricated model): the best setting ≤ 0.04 s per revolution (faster than the
 bearing turns) and ≥ 50× faster than baseline; Exudyn's best within 2.5× of the reference engine's best, each at
 cage-speed error ≤ 1e-3 with converged slips, and ≥ 20× faster than baseline. Timings are compared as ratios of one
@@ -31,16 +37,23 @@ run, on a shared machine; each setting runs twice and its faster run counts.
 
 from __future__ import annotations
 
+import argparse
+import json
 import math
+import subprocess
+from pathlib import Path
 
 import numpy as np
 
 from bearing_mbs.engines import simulate
+from bearing_mbs.models import MODELS as REGISTERED_MODELS
 from bearing_mbs.models import build_scene, load_spec
+from bearing_mbs.numerics.work_precision import MeasuredSetting, WorkPrecisionTable, write_tables
+from bearing_mbs.spec import to_mapping
 from bearing_mbs.studies.convergence import errors, reference_scales, run_setting
 from bearing_mbs.studies.numerics_report import sound_slip_bound
 
-from common import SCENARIOS, write
+from common import OUT, SCENARIOS, machine, write
 
 REVOLUTION = 2 * math.pi / (1500 * 2 * math.pi / 60)  # 0.04 s
 DOCUMENT_STEP = 1 / 1.8e6
@@ -100,8 +113,14 @@ OPERATING_CLEARANCE_SETTINGS = ("baseline", "exudyn_generalized_alpha_analytic_5
                                 "reference_generalized_alpha_rho0.3_1e-4", "reference_generalized_alpha_adaptive_1e-8")
 
 
+#: The model whose work–precision tables this benchmark writes.
+MODEL = "cylindrical_roller"
+REPOSITORY = Path(__file__).resolve().parents[1]
+SCENARIO = SCENARIOS / "seed_hss_steady.toml"
+
+
 def spec_of(model: str, overrides: list[str]):
-    spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [*MODELS[model], *COMMON, *overrides])
+    spec = load_spec(SCENARIO, [*MODELS[model], *COMMON, *overrides])
     return spec, build_scene(spec)
 
 
@@ -133,6 +152,7 @@ def measure(model: str, overrides: list[str], truth, slip_bound: float) -> dict:
     norms = errors(spec, scene, result, truth) if result.success else {}
     return {
         "model": model,
+        "settings": to_mapping(spec.solver.active),
         "status": result.status,
         "wall_time_s_per_revolution": stats.wall_time_s,
         "cage_speed_error": norms.get("cage_speed", math.nan),
@@ -227,11 +247,71 @@ def scaling(model: str, overrides: list[str]) -> dict:
             "cost_per_evaluation_exponent_in_rollers": exponent("microseconds_per_force_evaluation")}
 
 
+def git(*arguments: str) -> str:
+    return subprocess.run(["git", *arguments], cwd=REPOSITORY, capture_output=True, text=True, check=True).stdout.strip()
+
+
+def commit() -> dict:
+    """The commit the measurement runs on, and whether the work tree differs from it."""
+    return {"commit": git("rev-parse", "HEAD"), "work_tree_modified": bool(git("status", "--porcelain", "--",
+                                                                             "bearing_mbs"))}
+
+
+def tables(report: dict, command: str) -> Path:
+    """The bearing model's work–precision tables from ``report`` (this benchmark's figures), written where its
+    model record says (:class:`bearing_mbs.models.protocol.WorkPrecisionData`)."""
+    provenance = {"date": report["machine"]["date"], "machine": report["machine"], "command": command,
+                  **report.get("measured_at", {})}
+    written = []
+    for model in MODELS:
+        spec, _ = spec_of(model, [])
+        reference = spec.convergence.reference
+        settings = []
+        for name, overrides in settings_of(model).items():
+            run = report["runs"][key_of(model, name)]
+            section = run.get("settings") or to_mapping(spec_of(model, overrides)[0].solver.active)
+            engine = spec_of(model, overrides)[0].solver.engine
+            settings.append(MeasuredSetting(
+                name=name, engine=engine, settings=section, cage_speed_error=run["cage_speed_error"],
+                slips_converged=run["slips_converged"], status=run["status"],
+                cost=run["wall_time_s_per_revolution"] / REVOLUTION))
+        fine = report["fine_references"][model]
+        measured_on = {
+            "scenario": spec.scenario.name, "variant": model, "speed_rpm": spec.drive.speed_rpm,
+            "radial_load_N": spec.load.radial, "simulated_s": [0.0, REVOLUTION],
+            "error_window_s": fine["error_window_s"],
+            "reference": f"{reference.engine} {reference.method} at {reference.steps[0]:g} s",
+            "slip_error_bound": fine["slip_error_bound"],
+            "cost": "the faster of two runs' wall time per simulated second, compilation excluded",
+        }
+        written.append(WorkPrecisionTable(model, measured_on, provenance, tuple(settings)))
+    path = REGISTERED_MODELS[MODEL].work_precision.path
+    write_tables(path, written, "Measured work-precision tables of the cylindrical roller bearing, one per variant "
+                                "(written by benchmarks/bench_revolution.py; do not edit by hand)")
+    print(f"wrote {path}")
+    return path
+
+
+def tables_from_file() -> Path:
+    """The tables from the last measurement (benchmarks/out/bearing_revolution.json), without measuring. For a report
+    from before the commit was recorded, the provenance names the commit that holds its figures and the commits
+    that changed the scenario since (the tables then describe the scenario as it was)."""
+    path = OUT / "bearing_revolution.json"
+    report = json.loads(path.read_text())
+    if "measured_at" not in report:
+        committed = git("log", "-1", "--format=%H", "--", str(path.relative_to(REPOSITORY)))
+        changed = git("log", "--format=%h", f"{committed}..HEAD", "--", str(SCENARIO.relative_to(REPOSITORY)))
+        report["measured_at"] = {"commit": None, "figures_committed_in": committed,
+                                 "scenario_changed_since_by": changed.split()}
+    return tables(report, "python benchmarks/bench_revolution.py --table-only")
+
+
 def main() -> dict:
     report = {
         "case": "seed_hss_steady, one shaft revolution (0.04 s) from the start; lubricated (constraint cage) at zero "
                 "clearance, dry (penalty cage), lubricated at the operating clearance",
         "target_cage_speed_error": TARGET_ERROR,
+        "measured_at": commit(),
         "fine_references": {},
         "runs": {},
     }
@@ -263,6 +343,7 @@ def main() -> dict:
                                       "target": ">= 20"},
     }
     write("bearing_revolution", report)
+    tables({**report, "machine": machine()}, "python benchmarks/bench_revolution.py")
     report["scaling"] = {}
     for model in ("lubricated", "dry"):  # the lubricated model's constraint cage against the dry model's penalty cage
         if summary[model]["best"] is not None:
@@ -272,4 +353,7 @@ def main() -> dict:
 
 
 if __name__ == "__main__":
-    main()
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--table-only", action="store_true",
+                        help="write the work-precision tables from benchmarks/out/bearing_revolution.json, no runs")
+    tables_from_file() if parser.parse_args().table_only else main()

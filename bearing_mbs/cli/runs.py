@@ -43,20 +43,23 @@ def _run(args) -> int:
     every case but bad input."""
     from bearing_mbs.core.interrupt import stop_requested
     from bearing_mbs.models import MODELS
-    from bearing_mbs.runner import run_spec, write_outputs
+    from bearing_mbs.runner import run_spec, spec_for_run, write_outputs
 
     spec = load_with_engine(args)
     animate = MODELS.part(spec.scenario.model, "animate", "an animation", "--animate") if args.animate else None
     directory = output_directory(args)
     scene, result = run_spec(spec, progress_meter(args.quiet))
+    run_as, choice = spec_for_run(spec, scene)  # the settings [solver] tolerance chose, if set
     if args.check_slip and result.completed and not stop_requested():
         from bearing_mbs.studies.spurious_slip import check_spurious_slip
 
-        slip = check_spurious_slip(scene, spec.solver, spec.scenario.end_time, result)
+        slip = check_spurious_slip(scene, run_as.solver, spec.scenario.end_time, result)
         result.checks = (*result.checks, slip.to_check())
     summary = write_outputs(spec, scene, result, directory, figures=not args.no_figures)
     if args.animate and result.completed:
         animate(spec, scene, result, directory / "animation.gif")
+    if choice is not None:
+        print(choice.text())
     print(f"{summary['scenario']}: {summary['status']} ({summary['engine']} {summary['solver']}, "
           f"{summary['steps']} steps, {summary['wall_time_s']:.3g} s) -> {summary['written_to']}")
     if result.message:

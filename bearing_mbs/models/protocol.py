@@ -147,6 +147,23 @@ class SteadyBalance:
 
 
 @dataclass(frozen=True)
+class WorkPrecisionData:
+    """A model's measured work–precision tables, from which ``[solver] tolerance`` chooses a setting
+    (:mod:`bearing_mbs.numerics.work_precision` reads and chooses).
+
+    * ``path`` — the JSON file of its tables, one per variant of the model, each with the settings measured on each
+      engine, their cage-speed error and cost, and the provenance of the measurement; written by a measurement
+      (``benchmarks/bench_revolution.py``), never by hand;
+    * ``variant(spec) -> str | None`` — the table that describes a spec's scene, None where none does;
+    * ``variants`` — each table's variant in words (what the refusal of a scene without one lists).
+    """
+
+    path: Path
+    variant: Callable[[Any], str | None]
+    variants: dict[str, str]
+
+
+@dataclass(frozen=True)
 class Model:
     """One model.
 
@@ -174,7 +191,9 @@ class Model:
     * ``stability`` — its stability suite (:class:`StabilitySuite`); optional;
     * ``settling_check(spec, scene, result) -> Check`` — whether a run's analysis window has settled (a
       sensitivity study's ``steady_run`` evaluator adds it to every run's checks); optional;
-    * ``steady_balance`` — its quasi-static steady state (:class:`SteadyBalance`); optional.
+    * ``steady_balance`` — its quasi-static steady state (:class:`SteadyBalance`); optional;
+    * ``work_precision`` — its measured work–precision tables (:class:`WorkPrecisionData`), which
+      ``[solver] tolerance`` needs; optional.
     """
 
     name: str
@@ -192,6 +211,7 @@ class Model:
     stability: StabilitySuite | None = None
     settling_check: Callable[[Any, Scene, Result], Any] | None = None
     steady_balance: SteadyBalance | None = None
+    work_precision: WorkPrecisionData | None = None
 
 
 class ModelRegistry(Registry[Model]):

@@ -6,6 +6,7 @@ result it returns carries its checks (:mod:`bearing_mbs.runner.checks`), so its 
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import os
 from pathlib import Path
@@ -21,6 +22,7 @@ from bearing_mbs.engines import simulate
 from bearing_mbs.io.json import json_safe, rounded, write_json
 from bearing_mbs.models import MODELS, build_scene
 from bearing_mbs.numerics.advisor import step_advice, step_warning
+from bearing_mbs.numerics.work_precision import SolverChoice, choose_solver
 from bearing_mbs.runner.checks import run_checks
 from bearing_mbs.runner.outputs import SUMMARY_FILE, Staging
 from bearing_mbs.runner.run_time import require_feasible_run_time
@@ -36,8 +38,12 @@ OUTPUT_MEMORY_SHARE = 0.5
 
 
 def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, Result]:
-    """Build the scene (all validation happens here, before any simulation), run it and check the result."""
+    """Build the scene (all validation happens here, before any simulation), run it and check the result. With
+    ``[solver] tolerance`` the run takes the setting chosen for it (:func:`spec_for_run`)."""
     scene = build_scene(spec)
+    spec, choice = spec_for_run(spec, scene)
+    if choice is not None:
+        log.info("%s: %s", spec.scenario.name, choice.text())
     run_time_warnings = require_feasible_run_time(scene, spec.solver, spec.scenario.end_time)
     require_output_fits(scene, spec.solver, spec.scenario.end_time)
     require_initial_speeds_within_limit(scene, spec.solver)
@@ -49,6 +55,14 @@ def run_spec(spec: Spec, progress: ProgressMeter | None = None) -> tuple[Scene, 
     if not result.completed:
         log.warning("%s: %s", spec.scenario.name, result.message)
     return scene, result
+
+
+def spec_for_run(spec: Spec, scene: Scene) -> tuple[Spec, SolverChoice | None]:
+    """The spec a run of ``scene`` takes: ``spec`` itself, or with ``[solver] tolerance`` its engine's section
+    replaced by the setting chosen from the model's work–precision table, with the choice
+    (:func:`bearing_mbs.numerics.work_precision.choose_solver`; SpecError before anything runs where none fits)."""
+    solver, choice = choose_solver(spec, scene)
+    return (spec, None) if choice is None else (dataclasses.replace(spec, solver=solver), choice)
 
 
 def bytes_per_instant(scene: Scene) -> int:
@@ -109,7 +123,9 @@ def step_warnings(scene: Scene, solver: SolverSpec) -> list[str]:
 
 def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
     """The summary.json content: run identity, cost, status, checks and the model's metrics, rounded to the
-    digits that carry meaning, with a ``units`` map."""
+    digits that carry meaning, with a ``units`` map; with ``[solver] tolerance``, the setting chosen
+    (``solver_choice``: the settings, their measured error and cost, the table they came from)."""
+    spec, choice = spec_for_run(spec, scene)
     summary = {
         "scenario": spec.scenario.name,
         "status": result.status,
@@ -129,6 +145,8 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
     }
     advice = step_advice(scene, spec.solver)
     summary["step_advice"] = advice.to_dict()
+    if choice is not None:
+        summary["solver_choice"] = choice.to_dict()
     if result.engine == "exudyn":
         summary["connector"] = result.metadata.get("connector")
     model = MODELS[spec.scenario.model]
@@ -139,7 +157,7 @@ def summarize(spec: Spec, scene: Scene, result: Result) -> dict:
         summary["metrics_error"] = f"{type(error).__name__}: {error}"
         if summary["status"] == SUCCESS:  # success means every check passed, and the metrics were not computed
             summary["status"] = SUSPECT
-    units = {**RUN_UNITS, **model.units, "step_advice": advice.units}
+    units = {**RUN_UNITS, **model.units, "step_advice": advice.units, "solver_choice": SolverChoice.units}
     summary["units"] = {key: units[key] for key in summary if key in units}
     return {key: rounded(json_safe(value)) for key, value in summary.items()}
 

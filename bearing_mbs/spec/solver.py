@@ -129,19 +129,26 @@ class SolverSpec:
     engine: ``reference`` or ``exudyn``. output_interval [s] > 0: spacing of stored output.
     penetration_limit: a run stops when a pair's penetration exceeds this fraction of its smaller radius
     (a guard against steps too large for the stiffness), in (0, 1]. speed_limit [m/s] > 0: a run stops
-    when a body's centre moves faster (a blow-up that stays finite).
+    when a body's centre moves faster (a blow-up that stays finite). tolerance: optional, the relative error of the
+    mean cage speed (docs/numerics.md, the ``cage_speed`` norm) the run is to keep, in (0, 1): the engine's method,
+    step and Newton/adaptive tolerance are then chosen from the model's measured work–precision table (the cheapest
+    measured setting on ``engine`` within it, with converged slips; :mod:`bearing_mbs.numerics.work_precision`)
+    and replace its section's; None (the default) runs the section's settings as written.
     """
 
     engine: str = "reference"
     output_interval: float = 1e-3
     penetration_limit: float = 0.25
     speed_limit: float = 1e3
+    tolerance: float | None = None
     reference: ReferenceSolver = field(default_factory=ReferenceSolver)
     exudyn: ExudynSolver = field(default_factory=ExudynSolver)
 
     def __post_init__(self):
         one_of("engine", self.engine, ENGINES)
         positive("output_interval", self.output_interval)
+        if self.tolerance is not None:
+            in_range("tolerance", self.tolerance, 0.0, 1.0, "-", low_open=True, high_open=True)
         in_range("penetration_limit", self.penetration_limit, 0.0, 1.0, "-", low_open=True)
         positive("speed_limit", self.speed_limit)
 
