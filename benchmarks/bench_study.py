@@ -1,7 +1,7 @@
 """Throughput of the lubricated skidding Morris study at scale on a local Dask cluster of 2 workers.
 
 The study is the shipped ``scenarios/study_skidding_morris.toml``, loaded as ``bearing-mbs sweep`` loads it
-(:func:`bearing_mbs.studies.sensitivity.load_study`: the lubricated seed_hss_steady, Exudyn generalized-alpha at
+(:func:`bearing_mbs.studies.sensitivity.load_study`: the lubricated seed_hss_steady, the reference engine's generalized-alpha at
 h = 1e-5 s, ``evaluate = "steady_run"``), with two changes: every run simulates ``--end-time`` (0.1 s) instead of
 0.8 s, its analysis window the second half of it; and ``method.samples`` is raised to as many Morris trajectories as
 give ``--runs`` distinct runs (the first ``--runs`` distinct points of the design are evaluated). The runs go through
