@@ -110,7 +110,8 @@ MODELS = {
 OPERATING_CLEARANCE_SETTINGS = ("baseline", "exudyn_generalized_alpha_analytic_5e-5",
                                 "exudyn_generalized_alpha_analytic_rho0.3_1e-4", "reference_generalized_alpha_1e-5",
                                 "reference_generalized_alpha_2e-5", "reference_generalized_alpha_rho0.3_5e-5",
-                                "reference_generalized_alpha_rho0.3_1e-4", "reference_generalized_alpha_adaptive_1e-8")
+                                "reference_generalized_alpha_rho0.3_1e-4", "reference_generalized_alpha_adaptive_1e-8",
+                                "document")
 
 
 #: The model whose work–precision tables this benchmark writes.
