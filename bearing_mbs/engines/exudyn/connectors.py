@@ -80,7 +80,7 @@ class ForceConnector:
         self._v = np.asarray(q_t, dtype=float)
         self.time = t
         self.power = self.evaluate(self.elements, t, self._q, self._v, self.latched, self._forces, self._pairs, False)
-        return self._forces
+        return self._forces.tolist()  # which Exudyn converts faster than an array
 
     def power_at(self, t: float, q: np.ndarray, v: np.ndarray):
         """The (supplied, dissipated) power [W] of the last evaluation if it was at time t [s] and state (q, v)

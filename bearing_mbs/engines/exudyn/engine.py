@@ -2,7 +2,9 @@
 
 * bodies: ``NodeRigidBody2D`` + ``ObjectRigidBody2D``; a fixed coordinate is a ground
   ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
-* gravity: ``LoadMassProportional`` per body, only when gravity is non-zero;
+* gravity: the weights m g as the constant force vector of the force object below, where there is one (a load per
+  body costs about 2 µs per Newton iteration, docs/engines.md), else ``LoadMassProportional`` per body; only when
+  gravity is non-zero;
 * contacts, loads and drives: see :mod:`.exudyn_connectors`;
 * distance constraints: ``ObjectConnectorDistance``; point-on-line constraints: ``ObjectJointPrismatic2D`` with
   ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers reject joints: measured with
@@ -107,11 +109,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
 
 def _add_bodies(mbs, scene: Scene) -> tuple[list, list]:
     """One rigid body per scene body (a body with an orbit constraint keeps :data:`CARRIER_SHARE` of its rotational
-    inertia), its fixed coordinates tied to the ground, and gravity where there is any; returns the nodes and the
-    bodies."""
+    inertia), its fixed coordinates tied to the ground; returns the nodes and the bodies."""
     from exudyn.itemInterface import (
-        LoadMassProportional,
-        MarkerBodyMass,
         MarkerNodeCoordinate,
         NodePointGround,
         NodeRigidBody2D,
@@ -135,12 +134,21 @@ def _add_bodies(mbs, scene: Scene) -> tuple[list, list]:
                     ground_marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground_node, coordinate=0))
                 marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))
                 mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[ground_marker, marker]))
-
-    if any(scene.gravity):
-        for body in bodies:
-            marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
-            mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
     return nodes, bodies
+
+
+def _weights(scene: Scene) -> np.ndarray:
+    """The bodies' weights as generalized forces (m g_x, m g_y, 0 per body) [N]."""
+    return np.array([[b.mass * scene.gravity[0], b.mass * scene.gravity[1], 0.0] for b in scene.bodies]).ravel()
+
+
+def _add_gravity_loads(mbs, scene: Scene, bodies: list) -> None:
+    """Gravity as one ``LoadMassProportional`` per body (where no force object carries the weights)."""
+    from exudyn.itemInterface import LoadMassProportional, MarkerBodyMass
+
+    for body in bodies:
+        marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
+        mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
 
 
 def _add_constraints(mbs, scene: Scene, nodes: list, bodies: list) -> list:
@@ -203,8 +211,9 @@ def _add_carrier(mbs, scene: Scene, nodes: list, index: int) -> int:
 def _add_force_elements(mbs, scene: Scene, packed, reference: np.ndarray, latched: np.ndarray, settings,
                         nodes: list, bodies: list):
     """The contacts (Exudyn's own with the native connector) and every other force element, through our compiled
-    kernels in one generic ODE2 object, compiled here, outside the timed region; returns the force connector and
-    the Jacobian connector (None where not used)."""
+    kernels in one generic ODE2 object, compiled here, outside the timed region, which also carries the weights;
+    gravity loads where there is no such object. Returns the force connector and the Jacobian connector (None where
+    not used)."""
     from exudyn.itemInterface import ObjectGenericODE2, ObjectGround
 
     n = scene.coordinate_count
@@ -223,7 +232,10 @@ def _add_force_elements(mbs, scene: Scene, packed, reference: np.ndarray, latche
             if settings.implicit and settings.jacobian == "analytic" and has_analytic_jacobian(scene):
                 jacobian = JacobianConnector(connector)
         mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector,
-                                        jacobianUserFunction=jacobian or 0))
+                                        jacobianUserFunction=jacobian or 0,
+                                        forceVector=_weights(scene) if any(scene.gravity) else []))
+    elif any(scene.gravity):
+        _add_gravity_loads(mbs, scene, bodies)
     return connector, jacobian
 
 
@@ -347,6 +359,7 @@ class _StepMonitor:
         self._pairs = np.empty((len(latched), N_PAIR_OUTPUTS))
         self._forces_of = {complete: compiled(element_forces, packed.elements, 0.0, self.q, self.v, latched,
                                               self._forces, self._pairs, complete) for complete in (False, True)}
+        self._advance = compiled(advance_pair_state, packed.pairs, self.q, self.v, 0.0, latched, events, bounds)
         self.work = np.zeros(2)  # supplied, dissipated [J]
         self._last_power = np.array(self._evaluate(0.0))
         self._progress_every, self._calls = max(1, int(end_time / solver.exudyn.step / 200)), 0
@@ -385,7 +398,7 @@ class _StepMonitor:
         power = np.array(self._power(t))  # before the latch update: the forces of the step just taken
         self.work += 0.5 * h * (self._last_power + power)
         self._last_power = power
-        _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
+        _, worst = self._advance(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
             return self._stop(Failure.PENETRATION, t, worst, q, v)
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
