@@ -24,16 +24,16 @@ import math
 import time
 
 import numpy as np
+from bench_revolution import REVOLUTION, TARGET_ERROR, exudyn, fine_reference, reference, spec_of
 
 from bearing_mbs.engines import simulate
 from bearing_mbs.engines.exudyn import connectors, engine
 from bearing_mbs.studies.convergence import errors
 
-from bench_revolution import REVOLUTION, exudyn, fine_reference, reference, spec_of
 from common import write
 
 #: Runs of each A/B variant; the smallest CPU time counts.
-REPEATS = 3
+REPEATS = 5
 #: The A/B window [s] (from the start) and the steps [s] it is measured at.
 WINDOW = 0.01
 STEPS = (1e-5, 2e-5)
@@ -110,6 +110,7 @@ OPTIONS = {
     "array_return": (None, "the force function returns a numpy array instead of a list"),
     "exudyn_dense_inverse": (None, "Exudyn's default linear solver (EXUdense: dense inverse)"),
     "eigen_dense_lu": (None, "Eigen's dense LU with partial pivoting"),
+    "all_replaced": (None, "every option replaced at once: the engine before issue 30"),
 }
 
 
@@ -117,6 +118,9 @@ def _patches(option):
     factories = {"gravity_loads": _gravity_loads, "array_return": _array_forces,
                  "exudyn_dense_inverse": lambda: _linear_solver("EXUdense"),
                  "eigen_dense_lu": lambda: _linear_solver("EigenDense")}
+    if option == "all_replaced":
+        return [patch for name in OPTIONS if name not in ("as_built", "all_replaced", "eigen_dense_lu")
+                for patch in _patches(name)]
     patches = OPTIONS[option][0]
     return factories[option]() if patches is None else patches
 
@@ -338,6 +342,30 @@ def newton_settings() -> dict:
     return runs
 
 
+def summarize(runs: dict) -> dict:
+    """Each engine's cheapest run (CPU time) within the target cage-speed error, and at each reference run's error
+    the cheapest Exudyn run as good or better."""
+    def cheapest(prefix, error):
+        sound = [name for name, run in runs.items() if name.startswith(prefix) and run["status"] == "success"
+                 and run["cage_speed_error"] <= error]
+        return min(sound, key=lambda name: runs[name]["cpu_time_s_per_revolution"], default=None)
+
+    def ratio(slow, fast):
+        if slow is None or fast is None:
+            return None
+        return runs[slow]["cpu_time_s_per_revolution"] / runs[fast]["cpu_time_s_per_revolution"]
+
+    exudyn_best, reference_best = cheapest("exudyn", TARGET_ERROR), cheapest("reference", TARGET_ERROR)
+    at_reference_error = {}
+    for name, run in runs.items():
+        if name.startswith("reference") and run["status"] == "success":
+            match = cheapest("exudyn", run["cage_speed_error"])
+            at_reference_error[name] = {"exudyn": match, "exudyn_over_reference": ratio(match, name)}
+    return {"target_cage_speed_error": TARGET_ERROR, "exudyn_best": exudyn_best, "reference_best": reference_best,
+            "exudyn_best_over_reference_best": ratio(exudyn_best, reference_best),
+            "at_each_reference_error": at_reference_error}
+
+
 def main() -> dict:
     report = {"case": "seed_hss_steady (lubricated, constraint cage), Exudyn generalized-alpha with the analytic "
                       "Jacobian; CPU times of the process (Exudyn runs on one thread), the faster of repeated runs"}
@@ -346,6 +374,7 @@ def main() -> dict:
     report["options"] = {f"{step:g}": options_ab(step) for step in STEPS}
     write("exudyn_overhead", report)
     report["newton"] = newton_settings()
+    report["summary"] = summarize(report["newton"])
     write("exudyn_overhead", report)
     return report
 
