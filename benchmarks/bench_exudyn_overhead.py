@@ -294,7 +294,13 @@ NEWTON = {
     "exudyn_2e-05_contractivity_0.2": (exudyn(2e-5), _newton(modifiedNewtonContractivity=0.2)),
     **{f"exudyn_{step:g}_increment_criterion_1e-8": (
         exudyn(step), _newton(residualMode=1, relativeTolerance=1e-8, absoluteTolerance=1e-8)) for step in STEPS},
+    # more numerical damping (ρ∞ = 0.5 instead of 0.9): fewer Jacobian updates, on either engine
+    **{f"exudyn_{step:g}_tolerance_0.001_rho_0.5": (
+        exudyn(step, tolerance=1e-3) + ["solver.exudyn.spectral_radius=0.5"], None) for step in (2e-5, 3e-5)},
     **{f"reference_{step:g}": (reference("generalized_alpha", step, 1e-6), None) for step in STEPS},
+    **{f"reference_{step:g}_rho_0.5": (
+        reference("generalized_alpha", step, 1e-6) + ["solver.reference.spectral_radius=0.5"], None)
+       for step in (2e-5, 3e-5)},
 }
 
 

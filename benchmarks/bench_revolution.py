@@ -69,6 +69,11 @@ SETTINGS = {
     # (benchmarks/out/exudyn_overhead.json)
     "exudyn_generalized_alpha_analytic_1e-5_newton_1e-3": exudyn(1e-5, tolerance=1e-3),
     "exudyn_generalized_alpha_analytic_2e-5_newton_1e-3": exudyn(2e-5, tolerance=1e-3),
+    # more numerical damping, ρ∞ = 0.5: a third of the Jacobian updates at 2e-5 s
+    "exudyn_generalized_alpha_analytic_2e-5_newton_1e-3_rho_0.5": [*exudyn(2e-5, tolerance=1e-3),
+                                                                   "solver.exudyn.spectral_radius=0.5"],
+    "exudyn_generalized_alpha_analytic_3e-5_newton_1e-3_rho_0.5": [*exudyn(3e-5, tolerance=1e-3),
+                                                                   "solver.exudyn.spectral_radius=0.5"],
     "reference_generalized_alpha_1e-5": reference("generalized_alpha", 1e-5, 1e-6),
     "reference_generalized_alpha_2e-5": reference("generalized_alpha", 2e-5, 1e-6),
     "reference_generalized_alpha_5e-5": reference("generalized_alpha", 5e-5, 1e-6),
