@@ -3,7 +3,7 @@
 * bodies: ``NodeRigidBody2D`` + ``ObjectRigidBody2D``; a fixed coordinate is a ground
   ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
 * gravity: the weights m g as the constant force vector of the force object below, where there is one (a load per
-  body costs about 2 µs per Newton iteration, docs/engines.md), else ``LoadMassProportional`` per body; only when
+  body is evaluated at every Newton iteration, docs/engines.md), else ``LoadMassProportional`` per body; only when
   gravity is non-zero;
 * contacts, loads and drives: see :mod:`.exudyn_connectors`;
 * distance constraints: ``ObjectConnectorDistance``; point-on-line constraints: ``ObjectJointPrismatic2D`` with
@@ -84,10 +84,10 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     nodes, bodies = _add_bodies(mbs, scene)
     joints = _add_constraints(mbs, scene, nodes, bodies)
     connector, jacobian = _add_force_elements(mbs, scene, packed, reference, latched, settings, nodes, bodies)
-    evaluates_all = connector is not None and connector.elements is packed.elements  # not next to native contacts
+    # the compiled connector evaluates what the monitor evaluates (the python one the twin, the native one no pairs)
+    same_forces = connector if settings.connector == "compiled" else None
     monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                           _JointForces(mbs, joints), stop_request(stop), step_advice,
-                           connector if evaluates_all else None)
+                           _JointForces(mbs, joints), stop_request(stop), step_advice, same_forces)
     mbs.SetPostStepUserFunction(monitor)
     mbs.Assemble()
 
@@ -310,8 +310,8 @@ class _JointForces:
     """The magnitudes of the joints' reaction forces [N]: the norm of each joint's Lagrange multipliers, read in one
     call from Exudyn's algebraic coordinates. Equal to the norm of each joint's force output (``Force`` of a
     distance connector, ``ForceLocal`` of a prismatic joint) to rounding (measured: identical for distance
-    connectors, within 4e-16 relative for prismatic joints), which costs about 6 µs per joint and output row
-    (docs/engines.md)."""
+    connectors, within 4e-16 relative for prismatic joints); reading each joint's output instead costs about 6 µs
+    per joint and output row (docs/engines.md)."""
 
     def __init__(self, mbs, joints: list):
         self.mbs, self.joints = mbs, joints
@@ -346,7 +346,7 @@ class _StepMonitor:
     def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress,
                  constraint_forces, stop, step_advice=None, connector=None):
         self.scene, self.packed, self.reference, self.stop = scene, packed, reference, stop
-        self.connector = connector  # its last evaluation's power, where it evaluated every kind of packed
+        self.connector = connector  # the compiled force connector, whose last evaluation's power it may reuse
         self.step_advice = step_advice
         self.latched, self.events, self.bounds = latched, events, bounds
         self.solver, self.progress, self.constraint_forces = solver, progress, constraint_forces
