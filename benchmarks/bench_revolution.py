@@ -63,9 +63,11 @@ TARGET_ERROR = 1e-3
 REPEATS = 2
 
 
-def exudyn(step: float, jacobian: str = "analytic", spectral_radius: float | None = None) -> list[str]:
+def exudyn(step: float, jacobian: str = "analytic", spectral_radius: float | None = None,
+           tolerance: float | None = None) -> list[str]:
     settings = ["solver.engine=exudyn", "solver.exudyn.method=generalized_alpha", f"solver.exudyn.step={step}",
                 f"solver.exudyn.jacobian={jacobian}"]
+    settings += [f"solver.exudyn.tolerance={tolerance}"] if tolerance else []
     return settings + ([f"solver.exudyn.spectral_radius={spectral_radius}"] if spectral_radius is not None else [])
 
 
@@ -83,6 +85,13 @@ SETTINGS = {
     "exudyn_generalized_alpha_analytic_2e-5": exudyn(2e-5),
     "exudyn_generalized_alpha_analytic_5e-5": exudyn(5e-5),
     "exudyn_generalized_alpha_analytic_1e-4": exudyn(1e-4),
+    # Exudyn's Newton stops on its residual reduced by the tolerance: 1e-3 halves the iterations at the same errors
+    # (benchmarks/out/exudyn_overhead.json)
+    "exudyn_generalized_alpha_analytic_1e-5_newton_1e-3": exudyn(1e-5, tolerance=1e-3),
+    "exudyn_generalized_alpha_analytic_2e-5_newton_1e-3": exudyn(2e-5, tolerance=1e-3),
+    # more numerical damping, ρ∞ = 0.5: a third of the Jacobian updates at 2e-5 s
+    "exudyn_generalized_alpha_analytic_2e-5_newton_1e-3_rho_0.5": exudyn(2e-5, spectral_radius=0.5, tolerance=1e-3),
+    "exudyn_generalized_alpha_analytic_3e-5_newton_1e-3_rho_0.5": exudyn(3e-5, spectral_radius=0.5, tolerance=1e-3),
     "reference_generalized_alpha_1e-5": reference("generalized_alpha", 1e-5, 1e-6),
     "reference_generalized_alpha_2e-5": reference("generalized_alpha", 2e-5, 1e-6),
     "reference_generalized_alpha_5e-5": reference("generalized_alpha", 5e-5, 1e-6),
@@ -91,8 +100,8 @@ SETTINGS = {
     "reference_generalized_alpha_adaptive_1e-8": reference("generalized_alpha_adaptive", 1e-4, 1e-8),
     # strong numerical damping (rho_inf = 0.3) and a Newton tolerance at the target error: the steps the
     # contact modes' high-frequency remnants no longer hold back
-    "exudyn_generalized_alpha_analytic_rho0.3_5e-5": exudyn(5e-5, spectral_radius=0.3),
-    "exudyn_generalized_alpha_analytic_rho0.3_1e-4": exudyn(1e-4, spectral_radius=0.3),
+    "exudyn_generalized_alpha_analytic_rho0.3_5e-5": exudyn(5e-5, spectral_radius=0.3, tolerance=1e-3),
+    "exudyn_generalized_alpha_analytic_rho0.3_1e-4": exudyn(1e-4, spectral_radius=0.3, tolerance=1e-3),
     "reference_generalized_alpha_rho0.3_5e-5": reference("generalized_alpha", 5e-5, 1e-3, 0.3),
     "reference_generalized_alpha_rho0.3_1e-4": reference("generalized_alpha", 1e-4, 1e-3, 0.3),
     "reference_generalized_alpha_rho0.3_2e-4": reference("generalized_alpha", 2e-4, 1e-3, 0.3),
@@ -108,6 +117,7 @@ MODELS = {
 }
 #: The settings run on the operating clearance (all settings run on the others).
 OPERATING_CLEARANCE_SETTINGS = ("baseline", "exudyn_generalized_alpha_analytic_5e-5",
+                                "exudyn_generalized_alpha_analytic_1e-5_newton_1e-3",
                                 "exudyn_generalized_alpha_analytic_rho0.3_1e-4", "reference_generalized_alpha_1e-5",
                                 "reference_generalized_alpha_2e-5", "reference_generalized_alpha_rho0.3_5e-5",
                                 "reference_generalized_alpha_rho0.3_1e-4", "reference_generalized_alpha_adaptive_1e-8",

@@ -14,6 +14,9 @@ Loads and drives always go through a (compiled or numpy) GenericODE2, added only
 
 from __future__ import annotations
 
+import math
+
+import numba
 import numpy as np
 
 from bearing_mbs.contact.kernel import N_PAIR_OUTPUTS
@@ -46,22 +49,49 @@ def check_native(scene: Scene) -> None:
                             f"needs e_HC = 1 - 2d/3 in (0, 1]; use connector = compiled")
 
 
-class ForceConnector:
-    """A force user function over all body nodes, counting its evaluations."""
+def compiled(function, *args):
+    """The compiled function of the numba dispatcher ``function`` for the types of ``args`` (loaded from numba's
+    cache, or compiled, now). Called directly it skips the dispatcher's matching of the argument types, which
+    for the packed kinds' 56 arrays costs about 7 µs of a 20 µs call (docs/engines.md); it still converts every
+    argument, so it must be called with arguments of these types. Under ``NUMBA_DISABLE_JIT`` it is the Python
+    function itself."""
+    if not isinstance(function, numba.core.dispatcher.Dispatcher):
+        return function
+    return function.compile(tuple(numba.typeof(arg) for arg in args))
 
-    def __init__(self, packed, reference: np.ndarray, latched: np.ndarray, compiled: bool):
+
+class ForceConnector:
+    """A force user function over all body nodes, counting its evaluations and keeping the state and power of the
+    last one (:meth:`power_at`)."""
+
+    def __init__(self, packed, reference: np.ndarray, latched: np.ndarray, compiled_kernel: bool):
         self.elements, self.reference, self.latched = packed.elements, reference, latched
-        self.evaluate = element_forces if compiled else element_forces_twin
         self.evaluations = 0
-        self._q = np.empty_like(reference)
+        self.time = math.nan
+        self._q = reference.copy()
+        self._v = np.zeros_like(reference)
         self._forces = np.empty_like(reference)
         self._pairs = np.empty((packed.pairs.kind.size, N_PAIR_OUTPUTS))
+        self.evaluate = (compiled(element_forces, self.elements, 0.0, self._q, self._v, latched, self._forces,
+                                  self._pairs, False)
+                         if compiled_kernel else element_forces_twin)
+        self.power = (0.0, 0.0)
 
     def __call__(self, mbs, t, item_number, q, q_t):
         self.evaluations += 1
         np.add(self.reference, q, out=self._q)  # Exudyn passes displacements from the reference
-        self.evaluate(self.elements, t, self._q, np.asarray(q_t), self.latched, self._forces, self._pairs, False)
-        return self._forces
+        self._v = np.asarray(q_t, dtype=float)
+        self.time = t
+        self.power = self.evaluate(self.elements, t, self._q, self._v, self.latched, self._forces, self._pairs, False)
+        return self._forces.tolist()  # which Exudyn converts faster than an array
+
+    def power_at(self, t: float, q: np.ndarray, v: np.ndarray):
+        """The (supplied, dissipated) power [W] of the last evaluation if it was at time t [s] and state (q, v)
+        exactly, else None. Exudyn's Newton method ends on a residual at the accepted state, so the step monitor
+        finds that state's power here instead of evaluating the forces again."""
+        if t == self.time and np.array_equal(q, self._q) and np.array_equal(v, self._v):
+            return self.power
+        return None
 
 
 class JacobianConnector:
@@ -73,15 +103,21 @@ class JacobianConnector:
         self.forces = forces
         self.evaluations = 0
         n = forces.reference.size
+        self._q, self._v = forces.reference.copy(), np.zeros(n)
         self._position, self._velocity, self._matrix = np.empty((n, n)), np.empty((n, n)), np.empty((n, n))
+        f = forces
+        self._forces = compiled(element_forces, f.elements, 0.0, self._q, self._v, f.latched, f._forces, f._pairs,
+                                True)
+        self._jacobian = compiled(element_jacobian, f.elements, 0.0, self._q, self._v, f.latched, f._pairs,
+                                  self._position, self._velocity)
 
     def __call__(self, mbs, t, item_number, q, q_t, factor_position, factor_velocity):
         self.evaluations += 1
         f = self.forces
-        np.add(f.reference, q, out=f._q)
-        v = np.asarray(q_t)
-        element_forces(f.elements, t, f._q, v, f.latched, f._forces, f._pairs, True)
-        element_jacobian(f.elements, t, f._q, v, f.latched, f._pairs, self._position, self._velocity)
+        np.add(f.reference, q, out=self._q)
+        v = np.asarray(q_t, dtype=float)
+        self._forces(f.elements, t, self._q, v, f.latched, f._forces, f._pairs, True)
+        self._jacobian(f.elements, t, self._q, v, f.latched, f._pairs, self._position, self._velocity)
         np.multiply(self._position, -factor_position, out=self._matrix)
         self._matrix -= factor_velocity * self._velocity
         return self._matrix

@@ -2,7 +2,9 @@
 
 * bodies: ``NodeRigidBody2D`` + ``ObjectRigidBody2D``; a fixed coordinate is a ground
   ``CoordinateConstraint`` (explicit solvers eliminate it, implicit ones solve it);
-* gravity: ``LoadMassProportional`` per body, only when gravity is non-zero;
+* gravity: the weights m g as the constant force vector of the force object below, where there is one (a load per
+  body is evaluated at every Newton iteration, docs/engines.md), else ``LoadMassProportional`` per body; only when
+  gravity is non-zero;
 * contacts, loads and drives: see :mod:`.exudyn_connectors`;
 * distance constraints: ``ObjectConnectorDistance``; point-on-line constraints: ``ObjectJointPrismatic2D`` with
   ``constrainRotation=False`` (implicit solvers only: Exudyn's explicit solvers reject joints: measured with
@@ -39,6 +41,7 @@ from bearing_mbs.engines.exudyn.connectors import (
     JacobianConnector,
     add_native_contacts,
     check_native,
+    compiled,
     without_pairs,
 )
 from bearing_mbs.engines.run import Series, assemble_result, progress_meter, state_guard, stop_request, timed_run
@@ -81,9 +84,10 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
     nodes, bodies = _add_bodies(mbs, scene)
     joints = _add_constraints(mbs, scene, nodes, bodies)
     connector, jacobian = _add_force_elements(mbs, scene, packed, reference, latched, settings, nodes, bodies)
+    # the compiled connector evaluates what the monitor evaluates (the python one the twin, the native one no pairs)
+    same_forces = connector if settings.connector == "compiled" else None
     monitor = _StepMonitor(scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                           lambda: [_joint_force(mbs, exu, joint) for joint in joints], stop_request(stop),
-                           step_advice)
+                           _JointForces(mbs, joints), stop_request(stop), step_advice, same_forces)
     mbs.SetPostStepUserFunction(monitor)
     mbs.Assemble()
 
@@ -105,11 +109,8 @@ def simulate_exudyn(scene: Scene, solver: SolverSpec, end_time: float, progress:
 
 def _add_bodies(mbs, scene: Scene) -> tuple[list, list]:
     """One rigid body per scene body (a body with an orbit constraint keeps :data:`CARRIER_SHARE` of its rotational
-    inertia), its fixed coordinates tied to the ground, and gravity where there is any; returns the nodes and the
-    bodies."""
+    inertia), its fixed coordinates tied to the ground; returns the nodes and the bodies."""
     from exudyn.itemInterface import (
-        LoadMassProportional,
-        MarkerBodyMass,
         MarkerNodeCoordinate,
         NodePointGround,
         NodeRigidBody2D,
@@ -133,12 +134,21 @@ def _add_bodies(mbs, scene: Scene) -> tuple[list, list]:
                     ground_marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=ground_node, coordinate=0))
                 marker = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=node, coordinate=c))
                 mbs.AddObject(ObjectConnectorCoordinate(markerNumbers=[ground_marker, marker]))
-
-    if any(scene.gravity):
-        for body in bodies:
-            marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
-            mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
     return nodes, bodies
+
+
+def _weights(scene: Scene) -> np.ndarray:
+    """The bodies' weights as generalized forces (m g_x, m g_y, 0 per body) [N]."""
+    return np.array([[b.mass * scene.gravity[0], b.mass * scene.gravity[1], 0.0] for b in scene.bodies]).ravel()
+
+
+def _add_gravity_loads(mbs, scene: Scene, bodies: list) -> None:
+    """Gravity as one ``LoadMassProportional`` per body (where no force object carries the weights)."""
+    from exudyn.itemInterface import LoadMassProportional, MarkerBodyMass
+
+    for body in bodies:
+        marker = mbs.AddMarker(MarkerBodyMass(bodyNumber=body))
+        mbs.AddLoad(LoadMassProportional(markerNumber=marker, loadVector=[*scene.gravity, 0.0]))
 
 
 def _add_constraints(mbs, scene: Scene, nodes: list, bodies: list) -> list:
@@ -201,8 +211,9 @@ def _add_carrier(mbs, scene: Scene, nodes: list, index: int) -> int:
 def _add_force_elements(mbs, scene: Scene, packed, reference: np.ndarray, latched: np.ndarray, settings,
                         nodes: list, bodies: list):
     """The contacts (Exudyn's own with the native connector) and every other force element, through our compiled
-    kernels in one generic ODE2 object, compiled here, outside the timed region; returns the force connector and
-    the Jacobian connector (None where not used)."""
+    kernels in one generic ODE2 object, compiled here, outside the timed region, which also carries the weights;
+    gravity loads where there is no such object. Returns the force connector and the Jacobian connector (None where
+    not used)."""
     from exudyn.itemInterface import ObjectGenericODE2, ObjectGround
 
     n = scene.coordinate_count
@@ -213,17 +224,18 @@ def _add_force_elements(mbs, scene: Scene, packed, reference: np.ndarray, latche
     force_scene = without_pairs(packed) if native else packed
     if (scene.pairs and not native) or scene.forces:
         # the other force elements next to native contacts go through the compiled kernel
-        connector = ForceConnector(force_scene, reference, latched, compiled=settings.connector != "python")
         with notice_if_slow("compiling the force kernels for Exudyn (once after an install or a source change, "
                             "about 5 s; later runs load them from the cache)"):
-            connector(mbs, 0.0, 0, np.zeros(n), np.zeros(n))  # compile the kernel outside the timed region
-        connector.evaluations = 0
-        if settings.implicit and settings.jacobian == "analytic" and has_analytic_jacobian(scene):
-            jacobian = JacobianConnector(connector)
-            jacobian(mbs, 0.0, 0, np.zeros(n), np.zeros(n), 1.0, 0.0)  # compile outside the timed region
-            jacobian.evaluations = 0
+            # the kernels are compiled (or loaded) here, outside the timed region
+            connector = ForceConnector(force_scene, reference, latched,
+                                       compiled_kernel=settings.connector != "python")
+            if settings.implicit and settings.jacobian == "analytic" and has_analytic_jacobian(scene):
+                jacobian = JacobianConnector(connector)
         mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((n, n)), forceUserFunction=connector,
-                                        jacobianUserFunction=jacobian or 0))
+                                        jacobianUserFunction=jacobian or 0,
+                                        forceVector=_weights(scene) if any(scene.gravity) else []))
+    elif any(scene.gravity):
+        _add_gravity_loads(mbs, scene, bodies)
     return connector, jacobian
 
 
@@ -263,6 +275,9 @@ def _stats(mbs, connector, native: bool, wall_time_s: float) -> Stats:
 
 def _simulation_settings(exu, settings, end_time):
     s = exu.SimulationSettings()
+    # Eigen's sparse LU instead of Exudyn's default dense inverse: 0.24 ms less per Jacobian update of the lubricated
+    # seed bearing (87 unknowns), and a singular matrix is still reported (docs/engines.md)
+    s.linearSolver.solverType = exu.LinearSolverType.EigenSparse
     s.solution.file.write = False
     s.show.computationTime = False
     s.show.statistics = False
@@ -291,11 +306,23 @@ def _jacobian_used(settings, jacobian) -> str | None:
     return "analytic" if jacobian else "numerical"
 
 
-def _joint_force(mbs, exu, joint) -> float:
-    """Magnitude of a joint's reaction force [N]."""
-    kind = exu.OutputVariableType
-    output = kind.Force if "Distance" in mbs.GetObject(joint)["objectType"] else kind.ForceLocal
-    return float(np.linalg.norm(mbs.GetObjectOutput(joint, output)))
+class _JointForces:
+    """The magnitudes of the joints' reaction forces [N]: the norm of each joint's Lagrange multipliers, read in one
+    call from Exudyn's algebraic coordinates. Equal to the norm of each joint's force output (``Force`` of a
+    distance connector, ``ForceLocal`` of a prismatic joint) to rounding (measured: identical for distance
+    connectors, within 4e-16 relative for prismatic joints); reading each joint's output instead costs about 6 µs
+    per joint and output row (docs/engines.md)."""
+
+    def __init__(self, mbs, joints: list):
+        self.mbs, self.joints = mbs, joints
+        self._indices = None  # the joints' algebraic coordinates, known once the system is assembled
+
+    def __call__(self) -> list[float]:
+        data = self.mbs.systemData
+        if self._indices is None:
+            self._indices = [np.asarray(data.GetObjectLTGAE(joint), dtype=int) for joint in self.joints]
+        multipliers = np.asarray(data.GetAECoordinates())
+        return [float(np.linalg.norm(multipliers[index])) for index in self._indices]
 
 
 def _solver_failure(scene, solver, t, detail, step_advice=None) -> str:
@@ -317,8 +344,9 @@ class _StepMonitor:
     """PostStepUserFunction: per-pair state, events, output at output instants, guards, progress."""
 
     def __init__(self, scene, packed, reference, latched, events, bounds, end_time, solver, progress,
-                 constraint_forces, stop, step_advice=None):
+                 constraint_forces, stop, step_advice=None, connector=None):
         self.scene, self.packed, self.reference, self.stop = scene, packed, reference, stop
+        self.connector = connector  # the compiled force connector, whose last evaluation's power it may reuse
         self.step_advice = step_advice
         self.latched, self.events, self.bounds = latched, events, bounds
         self.solver, self.progress, self.constraint_forces = solver, progress, constraint_forces
@@ -329,14 +357,23 @@ class _StepMonitor:
         self.q, self.v = reference.copy(), np.array([b.velocity for b in scene.bodies], dtype=float).ravel()
         self._forces = np.empty(reference.size)
         self._pairs = np.empty((len(latched), N_PAIR_OUTPUTS))
+        self._forces_of = {complete: compiled(element_forces, packed.elements, 0.0, self.q, self.v, latched,
+                                              self._forces, self._pairs, complete) for complete in (False, True)}
+        self._advance = compiled(advance_pair_state, packed.pairs, self.q, self.v, 0.0, latched, events, bounds)
         self.work = np.zeros(2)  # supplied, dissipated [J]
-        self._power = np.array(self._evaluate(0.0))
+        self._last_power = np.array(self._evaluate(0.0))
         self._progress_every, self._calls = max(1, int(end_time / solver.exudyn.step / 200)), 0
         self._record(0.0, [0.0] * len(scene.constraints))
 
     def _evaluate(self, t, complete=False):
-        return element_forces(self.packed.elements, t, self.q, self.v, self.latched, self._forces, self._pairs,
-                              complete)
+        return self._forces_of[complete](self.packed.elements, t, self.q, self.v, self.latched, self._forces,
+                                         self._pairs, complete)
+
+    def _power(self, t):
+        """The (supplied, dissipated) power [W] at the current state: the connector's last evaluation where it was
+        at this state (as Exudyn's accepted steps are), else evaluated here."""
+        power = self.connector.power_at(t, self.q, self.v) if self.connector is not None else None
+        return power if power is not None else self._evaluate(t)
 
     def _row(self, t, constraint_forces=None) -> tuple:
         """The output row of the current state at t [s] (the pairs' outputs evaluated in full)."""
@@ -358,10 +395,10 @@ class _StepMonitor:
             return self._stop(kind, t, coordinate, self.q, self.v)
         h = t - self.time
         self.q, self.v, self.time = q, v, t
-        power = np.array(self._evaluate(t))  # before the latch update: the forces of the step just taken
-        self.work += 0.5 * h * (self._power + power)
-        self._power = power
-        _, worst = advance_pair_state(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
+        power = np.array(self._power(t))  # before the latch update: the forces of the step just taken
+        self.work += 0.5 * h * (self._last_power + power)
+        self._last_power = power
+        _, worst = self._advance(self.packed.pairs, q, v, t, self.latched, self.events, self.bounds)
         if worst >= 0:
             return self._stop(Failure.PENETRATION, t, worst, q, v)
         if len(self.rows) < self.output_times.size and t >= self.output_times[len(self.rows)] - self.margin:
