@@ -57,6 +57,14 @@ settings.register_profile("no-traceback-search", max_examples=int(os.environ.get
 PROFILE = settings.get_profile(os.environ.get("NO_TRACEBACK_PROFILE", "no-traceback"))
 
 
+def profile(examples: int) -> settings:
+    """:data:`PROFILE` with ``examples`` per model in the default run (a model whose examples are costly takes
+    fewer, for the suite's time budget); the search profile keeps its own number."""
+    if os.environ.get("NO_TRACEBACK_PROFILE", "no-traceback") != "no-traceback":
+        return PROFILE
+    return settings(PROFILE, max_examples=examples)
+
+
 def toml_value(value) -> str:
     """``value`` as a TOML literal (a mapping as an inline table)."""
     if isinstance(value, bool):

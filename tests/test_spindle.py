@@ -51,7 +51,9 @@ def _constant(rpm, *overrides):
     return _run(f"drive.speed_rpm={rpm}", f"drive.start_rpm={rpm}", "drive.ramp_time=0", *overrides)
 
 
-@pytest.mark.parametrize("engine", ["reference", "exudyn"])
+#: Exudyn's runs in the default suite; the reference engine's RK4 (three 0.3 s runs, a minute) in `make test-slow`
+#: (its rotor runs are held to Exudyn's by the unbalance-orbit test below).
+@pytest.mark.parametrize("engine", [pytest.param("reference", marks=pytest.mark.slow), "exudyn"])
 def test_whirl_growth_rates_match_the_linearised_rotor(engine):
     """At 0.95 and 1.05 of the threshold the runs' rates (-4.55 / +4.76 1/s on both engines) are the linearised
     eigenvalues' (-4.60 / +4.83) within 2 %; at the threshold itself the run's rate (-0.04 1/s) is within 2 % of
