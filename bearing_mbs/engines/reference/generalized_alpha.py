@@ -50,8 +50,8 @@ the increment alone (3.9 → 3.0 iterations per step at 2e-5 s, docs/numerics.md
 :math:`(\beta - \tfrac16) h^3 \dddot q`); its RMS norm, each coordinate scaled by tolerance·(1 + max(|q_n|,
 |q_{n+1}|)), must be ≤ 1, and the step-size controller (:mod:`~bearing_mbs.engines.reference.step_control`, with
 the method's settings from the catalogue: an error of order 2, growth at most 2×) proposes the next step, capped by
-``step``. A step whose Newton iteration fails is retried at :data:`NEWTON_RETRY` of it, in both forms; the
-fixed-step form then grows its step by :data:`RECOVERY` per step back to the nominal one, as Exudyn's does. J is
+``step``. A step whose Newton iteration fails, or whose new state the constraint projection refuses
+(:func:`take_back`), is retried at :data:`NEWTON_RETRY` of it, in both forms; the fixed-step form then grows its step by :data:`RECOVERY` per step back to the nominal one, as Exudyn's does. J is
 reused from step to step while Newton converges fast and the step stays within :data:`REUSE_RATIO` of the one it
 was formed for. The work is integrated
 with the trapezoid rule over the step's end powers.
