@@ -150,7 +150,7 @@ def film_forces(viscosity, entrainment, sliding, gap_rate, radius, length, half_
 
 @register_jitable
 def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length, half_width, gap):
-    r"""Derivatives of :func:`film_forces`: (∂W, ∂F_c, ∂f_P), each over (h₀, ḣ₀, u, Δu), scalars. With
+    r"""Derivatives of :func:`film_forces`: (∂W, ∂F_c, ∂f_P), each a 4-tuple over (h₀, ḣ₀, u, Δu), scalars. With
     :math:`q = \dot h_0 (2R/h_0)^{1/2}` and the outlet φ_c(χ) of the tabulated direction χ (its slope on the
     table's segment), :math:`W = -(24\eta R l/h_0)(|u| A + q B)` with :math:`A = J_3 + s^2c^2/4`,
     :math:`B = J_2 + sc^3/4` (:math:`A' = sc/2`, :math:`B' = c^2/4`), and
@@ -170,15 +170,13 @@ def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length,
     load_scale = 24.0 * viscosity * radius * length / gap
     a_term, b_term = j3 + s * s * c * c / 4.0, j2 + s * c**3 / 4.0
     load = -load_scale * (magnitude * a_term + squeeze * b_term)
-    load_slopes = np.zeros(4)
+    load_slopes = (0.0, 0.0, 0.0, 0.0)  # tuples, not arrays: the Jacobian calls this once per pair
     if load > 0.0:
         along_phi = magnitude * s * c / 2.0 + squeeze * c * c / 4.0
         load_u = -load_scale * (a_term + along_phi * outlet_slope * chi_u)
         load_q = -load_scale * (b_term + along_phi * outlet_slope * chi_q)
-        load_slopes[0] = -load / gap - load_q * squeeze / (2.0 * gap)
-        load_slopes[1] = load_q * root
-        load_slopes[2] = sign * load_u
-    shear_slopes = np.zeros(4)
+        load_slopes = (-load / gap - load_q * squeeze / (2.0 * gap), load_q * root, sign * load_u, 0.0)
+    shear_slopes = (0.0, 0.0, 0.0, 0.0)
     if c * c > 1e-12:
         p_term, q_term = k2 - s * s / (c * c) * k0, k1 - s / c * k0
         shear_scale = 12.0 * viscosity * length * root
@@ -187,14 +185,12 @@ def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length,
             along_phi = magnitude * (-2.0 * s * k0 / c**3) + squeeze * (-k0 / (c * c))
             shear_u = shear_scale * (p_term + along_phi * outlet_slope * chi_u)
             shear_q = shear_scale * (q_term + along_phi * outlet_slope * chi_q)
-            shear_slopes[0] = sign * (-shear / (2.0 * gap) - shear_q * squeeze / (2.0 * gap))
-            shear_slopes[1] = sign * shear_q * root
-            shear_slopes[2] = shear_u  # sign(u)² = 1
+            shear_slopes = (sign * (-shear / (2.0 * gap) - shear_q * squeeze / (2.0 * gap)), sign * shear_q * root,
+                            shear_u, 0.0)  # ∂/∂u: sign(u)² = 1
     span = root * gap
     angle = np.arctan(half_width / span)
     angle_slope = -1.0 / (span * span / half_width + half_width)  # d angle/d span: 0 on an unbounded plane
-    couette_slopes = np.zeros(4)
-    couette_slopes[3] = -2.0 * viscosity * length * root * angle
-    couette_slopes[0] = -2.0 * viscosity * length * sliding * (
-        -root / (2.0 * gap) * angle + root * angle_slope * span / (2.0 * gap))
+    couette_slopes = (-2.0 * viscosity * length * sliding * (-root / (2.0 * gap) * angle
+                                                              + root * angle_slope * span / (2.0 * gap)),
+                      0.0, 0.0, -2.0 * viscosity * length * root * angle)
     return load_slopes, couette_slopes, shear_slopes
