@@ -15,13 +15,22 @@ Figures (best of :data:`REPEATS` loops of many calls inside one compiled functio
 * ``form_newton_matrix``: all of it, as generalized-α forms it (the complete evaluation included);
 * ``newton_iteration``: one iteration's evaluation, residual and block solve.
 
-Seconds per call. The machine is shared: compare ratios of runs in one process, or interleaved processes (A, B, A,
-B), not seconds across runs.
+Seconds per call. The machine is shared: compare ratios of interleaved runs, not seconds across runs. With
+``--baseline DIR`` (a checkout of the package to compare with, e.g. ``git worktree add /tmp/base <commit>``) the
+figures are measured in :data:`ROUNDS` rounds, each running this script's measurement once on DIR's package and once
+on this one, in that order, in processes of their own (numba compiles each package's code apart); each figure is
+the best over the rounds, and ``ratio`` is baseline over this checkout.
 """
 
 from __future__ import annotations
 
+import argparse
+import json
+import os
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import numba
 import numpy as np
@@ -50,43 +59,47 @@ LOADED_AT, STEP = 0.01, 2e-5
 OVERRIDES = ["scenario.variant=lubricated", "bearing.diametral_clearance=0", "solver.engine=reference",
              "solver.reference.method=generalized_alpha", f"solver.reference.step={STEP}",
              "solver.reference.tolerance=1e-6", f"scenario.end_time={LOADED_AT}", "solver.output_interval=1e-3"]
-#: Loops of calls per figure (the fastest counts) and calls per loop.
-REPEATS, CALLS = 7, 2000
+#: Loops of calls per figure (the fastest counts) and calls per loop; rounds of baseline and this checkout.
+REPEATS, CALLS, ROUNDS = 7, 2000, 3
+#: This checkout's root (the package's parent).
+ROOT = Path(__file__).resolve().parents[1]
 
 
-@numba.njit(cache=True)
+# The timing loops are compiled in each run, not cached: a cached caller keeps the package functions it was compiled
+# with (numba checks its own file only), and would time the code before an edit.
+@numba.njit
 def _forces(packed, t, q, v, latched, workspace, complete, calls):
     for _ in range(calls):
         accelerations(packed, t, q, v, latched, workspace.acceleration, workspace, complete, UNCONSTRAINED)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _jacobian(packed, t, q, v, latched, workspace, carry, calls):
     for _ in range(calls):
         element_jacobian(packed.elements, t, q, v, latched, workspace.pair_out, carry.stiffness, carry.damping)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _constraint_rows(packed, q, v, carry, calls):
     for _ in range(calls):
         constraint_rows(packed.constraints, q, v, carry.constraint_gap, carry.constraint_rows,
                         carry.constraint_residual)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _assemble(packed, carry, calls):
     for _ in range(calls):
         assemble_constraints(carry.newton, packed.inverse_mass, carry.constraint_rows, packed.constraints.body_a,
                              packed.constraints.body_b)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _subtract(packed, carry, slope_q, slope_v, calls):
     for _ in range(calls):
         subtract_stiffness(carry.newton, packed.inverse_mass, carry.stiffness, carry.damping, slope_q, slope_v)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _factor(packed, carry, slope_q, slope_v, calls):
     """Assembly and factoring: the factor works in place, so each call starts from an assembled matrix."""
     for _ in range(calls):
@@ -96,13 +109,13 @@ def _factor(packed, carry, slope_q, slope_v, calls):
         factor(carry.newton)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _form(packed, t, q, v, latched, slope_q, slope_v, workspace, carry, counters, calls):
     for _ in range(calls):
         form_newton_matrix(packed, True, t, q, v, latched, slope_q, slope_v, workspace, carry, counters)
 
 
-@numba.njit(cache=True)
+@numba.njit
 def _iteration(packed, t, q, v, latched, workspace, carry, calls):
     for _ in range(calls):
         accelerations(packed, t, q, v, latched, workspace.acceleration, workspace, PARTIAL, UNCONSTRAINED)
@@ -163,19 +176,46 @@ def measure(driver, t) -> dict:
     return figures
 
 
-def main() -> dict:
+def figures_here() -> dict:
+    """The scene's description and the figures of the package this process imports."""
     scene, driver, t = loaded_bearing()
     figures = measure(driver, t)
     loaded = int(np.sum(driver.workspace.pair_out[:, 0] < 0.0))
-    report = {
-        "unit": "seconds per call",
-        "scene": {"scenario": "seed_hss_steady", "overrides": OVERRIDES, "loaded_at_s": t,
-                  "coordinates": scene.coordinate_count, "pairs": len(scene.pairs), "pairs_in_contact": loaded,
-                  "constraints": len(scene.constraints)},
-        "repeats": REPEATS,
-        "calls": CALLS,
-        "figures": figures,
-    }
+    return {"scene": {"scenario": "seed_hss_steady", "overrides": OVERRIDES, "loaded_at_s": t,
+                      "coordinates": scene.coordinate_count, "pairs": len(scene.pairs), "pairs_in_contact": loaded,
+                      "constraints": len(scene.constraints)},
+            "figures": figures}
+
+
+def figures_of(root: Path) -> dict:
+    """:func:`figures_here` in a process of its own on the package under ``root``."""
+    environment = {**os.environ, "PYTHONPATH": str(root)}
+    done = subprocess.run([sys.executable, __file__, "--figures-only"], env=environment, check=True,
+                          capture_output=True, text=True)
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+def main() -> dict:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--baseline", type=Path, help="a checkout of the package to compare with")
+    parser.add_argument("--figures-only", action="store_true", help=argparse.SUPPRESS)
+    arguments = parser.parse_args()
+    if arguments.figures_only:
+        print(json.dumps(figures_here()))
+        return {}
+    report = {"unit": "seconds per call", "repeats": REPEATS, "calls": CALLS}
+    if arguments.baseline is None:
+        report.update(figures_here())
+    else:
+        runs = {"baseline": [], "this": []}
+        for _ in range(ROUNDS):
+            runs["baseline"].append(figures_of(arguments.baseline.resolve()))
+            runs["this"].append(figures_of(ROOT))
+        best = {name: {figure: min(run["figures"][figure] for run in found) for figure in found[0]["figures"]}
+                for name, found in runs.items()}
+        report.update(scene=runs["this"][0]["scene"], rounds=ROUNDS, figures=best["this"],
+                      baseline={"checkout": str(arguments.baseline), "figures": best["baseline"]},
+                      ratio={figure: best["baseline"][figure] / best["this"][figure] for figure in best["this"]})
     write("kernel_cost", report)
     return report
 

@@ -110,8 +110,9 @@ def _add_film_partials(film, orientation, ra, rb, gap, gap_rate, slip, rolling, 
         partials[NORMAL, i] += d_load[i]
         partials[TANGENTIAL, i] += d_couette[i] + (0.5 - share) * d_shear[i]
         partials[MOMENT, i] += (1.0 - share) * rb * d_shear[i]
-    partials[TANGENTIAL, 0] -= poiseuille * share_gap
-    partials[MOMENT, 0] -= rb * poiseuille * share_gap
+    if orientation != 0.0:  # on a line the reaction does not move with the gap (and f_P is not given)
+        partials[TANGENTIAL, 0] -= poiseuille * share_gap
+        partials[MOMENT, 0] -= rb * poiseuille * share_gap
 
 
 @numba.njit(cache=True, inline="always")
@@ -141,14 +142,17 @@ def add_jacobian(parameters, t, q, v, latched, pair_out, force_position, force_v
                 gap, gap_rate, pairs.stiffness[k], pairs.exponent[k], pairs.damping_factor[k], latched[k],
                 pairs.approach_speed_floor[k])
         film = pairs.film[k, 0] > 0.0
-        film_load = poiseuille = 0.0
-        if film:
+        orientation, ra = ORIENTATION[kind], pairs.radius_a[k]
+        # the contact's own normal force, which its friction law reads: the film's load taken off, 0 apart (where
+        # the force is the film's alone); the film's Poiseuille shear, which moves its reaction on a curved surface
+        contact, poiseuille = (fn if gap < 0.0 else 0.0), 0.0
+        if film and (gap < 0.0 or orientation != 0.0):  # the force pass's values, not kept: evaluated again
             film_load, _, poiseuille = film_forces(pairs.film[k, 1], rolling, slip, gap_rate, rb, pairs.film[k, 0],
                                                    pairs.film[k, 2], max(gap, pairs.film[k, 3]))
-        # the contact's own normal force, which its friction law reads: less any film's load
-        orientation, ra = ORIENTATION[kind], pairs.radius_a[k]
+            if gap < 0.0:
+                contact = fn - film_load
         _law_partials(pairs.friction_law[k], pairs.friction_coefficient[k], pairs.regularisation_speed[k],
-                      pairs.rolling_resistance_arm[k], pairs.traction[k], orientation, ra, rb, fn - film_load,
+                      pairs.rolling_resistance_arm[k], pairs.traction[k], orientation, ra, rb, contact,
                       normal_gap, normal_rate, gap, slip, rolling, spin, partials)
         if film:
             _add_film_partials(pairs.film[k], orientation, ra, rb, gap, gap_rate, slip, rolling, poiseuille, partials)
