@@ -195,11 +195,12 @@ def figures_of(root: Path) -> dict:
     return json.loads(done.stdout.splitlines()[-1])
 
 
-def main() -> dict:
+def main(argv: list[str] | None = None) -> dict:
+    """Measure (``argv``: the command line's arguments; none from ``make bench``) and write the JSON."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--baseline", type=Path, help="a checkout of the package to compare with")
     parser.add_argument("--figures-only", action="store_true", help=argparse.SUPPRESS)
-    arguments = parser.parse_args()
+    arguments = parser.parse_args([] if argv is None else argv)
     if arguments.figures_only:
         print(json.dumps(figures_here()))
         return {}
@@ -221,4 +222,4 @@ def main() -> dict:
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])
