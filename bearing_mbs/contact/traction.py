@@ -219,16 +219,17 @@ def zero_slip_slope(row, rolling, normal_force, boundary_coefficient, regularisa
 @register_jitable
 def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
                            eyring_stress, shear_modulus, limiting_shear, heating=0.0):
-    r"""Derivatives of :func:`eyring_traction`: (∂μ_f/∂Δu [s/m], ∂μ_f/∂ln u, ∂μ_f/∂ln h, ∂μ_f/∂ln p̄, ∂μ_f/∂ln b).
+    r""":func:`eyring_traction`'s value, computed as it computes it (to the bit), and its derivatives: (μ_f,
+    ∂μ_f/∂Δu [s/m], ∂μ_f/∂ln u, ∂μ_f/∂ln h, ∂μ_f/∂ln p̄, ∂μ_f/∂ln b).
     With V the Eyring stress, E the elastic one and S = VE/(V + E): :math:`\mu_f = \mathrm{sign}(\Delta u)\Lambda_L
     \tanh(S/\Lambda_L\bar p)`, V a function of :math:`\ln x = \ln(\eta_0|\Delta u|/h\tau_0) + \alpha\bar p`, E of
     :math:`|\Delta u| b/(u h)`; at zero slip S grows as :math:`|\Delta u|\,v_1e_1/(v_1 + e_1)`. With shear heating
     V = V_iso R(Na), Na ∝ V_iso |Δu| h: d ln V = (1 + g) d ln V_iso + g (d ln|Δu| + d ln h), g = d ln R/d ln Na."""
     magnitude = abs(slip)
-    log_a = math.log(viscosity / (film * eyring_stress)) + pressure_viscosity * mean_pressure  # x = a |Δu|
     viscous = viscous_log = viscous_magnitude = 0.0
     if magnitude > 0.0:
-        log_x = log_a + math.log(magnitude)
+        rate = magnitude / film
+        log_x = math.log(viscosity * rate / eyring_stress) + pressure_viscosity * mean_pressure
         if log_x > 20.0:
             viscous = eyring_stress * (log_x + math.log(2.0))
             viscous_log, viscous_magnitude = eyring_stress, eyring_stress / magnitude
@@ -236,9 +237,10 @@ def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosi
             x = math.exp(log_x)
             viscous = eyring_stress * math.asinh(x)
             viscous_log = eyring_stress * x / math.sqrt(1.0 + x * x)
-            viscous_magnitude = eyring_stress * math.exp(log_a) / math.sqrt(1.0 + x * x)
-    else:
-        viscous_magnitude = eyring_stress * math.exp(log_a)
+            viscous_magnitude = eyring_stress * math.exp(log_x - math.log(magnitude)) / math.sqrt(1.0 + x * x)
+    else:  # x = a |Δu|
+        viscous_magnitude = eyring_stress * math.exp(math.log(viscosity / (film * eyring_stress))
+                                                     + pressure_viscosity * mean_pressure)
     viscous_film, viscous_pressure = -viscous_log, viscous_log * pressure_viscosity * mean_pressure  # over ln h, ln p̄
     if heating > 0.0 and viscous > 0.0:
         reduction, exponent = nahme_reduction(heating * viscous * magnitude * film)
@@ -247,7 +249,7 @@ def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosi
         viscous_pressure *= reduction * (1.0 + exponent)
         viscous *= reduction
     elastic_magnitude = shear_modulus * half_width / (speed * film)
-    elastic = elastic_magnitude * magnitude
+    elastic = shear_modulus * magnitude * half_width / (speed * film)
     total = viscous + elastic
     if total > 0.0:
         series = viscous * elastic / total
@@ -258,10 +260,12 @@ def eyring_traction_slopes(slip, speed, film, mean_pressure, half_width, viscosi
         series_magnitude = viscous_magnitude * elastic_magnitude / (viscous_magnitude + elastic_magnitude)
     limit = limiting_shear * mean_pressure
     y = series / limit
-    sech2 = 1.0 - math.tanh(y) ** 2
+    tanh = math.tanh(y)
+    sech2 = 1.0 - tanh**2
     sign = math.copysign(1.0, slip)
     per_series = sign * sech2 / mean_pressure
-    return (sech2 / mean_pressure * series_magnitude,
+    return (math.copysign(limit * tanh / mean_pressure, slip),
+            sech2 / mean_pressure * series_magnitude,
             per_series * series_e * (-elastic),
             per_series * (series_v * viscous_film + series_e * (-elastic)),
             per_series * series_v * viscous_pressure - sign * limiting_shear * sech2 * y,
@@ -293,9 +297,7 @@ def ehl_traction_slopes(row, slip, rolling, normal_force, boundary_coefficient, 
         film_speed = 0.0 if floored else central_u + thermal
         film_load = 0.0 if floored else central_w
         heating = _heating(row)
-        fluid = eyring_traction(slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity,
-                                row[_EYRING_STRESS], row[_SHEAR_MODULUS], row[_LIMITING_SHEAR], heating)
-        fluid_slip, by_speed, by_film, by_pressure, by_width = eyring_traction_slopes(
+        fluid, fluid_slip, by_speed, by_film, by_pressure, by_width = eyring_traction_slopes(
             slip, speed, film, mean_pressure, half_width, viscosity, pressure_viscosity, row[_EYRING_STRESS],
             row[_SHEAR_MODULUS], row[_LIMITING_SHEAR], heating)
         fluid_speed = by_speed + by_film * film_speed  # over ln u

@@ -156,12 +156,14 @@ def short_bearing_force_jacobian(e_x, e_y, v_x, v_y, speed, radius, length, clea
         # over the bracket, the denominator and the node's angle (which moves as −β)
         by_alpha = _WEIGHTS[k] * ((-a_coef * sin_a - b_coef * cos_a) / denominator**3
                                   - 3.0 * bracket * eps * sin_a / denominator**4)
-        profile_d = (_WEIGHTS[k] * (cos_a * a_d - sin_a * b_d) / denominator**3
-                     + _WEIGHTS[k] * 3.0 * bracket * cos_a / denominator**4 * eps_d - by_alpha * beta_d)
+        by_eps = _WEIGHTS[k] * 3.0 * bracket * cos_a / denominator**4
         f_n += profile * cos_a
         f_t += profile * sin_a
-        f_n_d += profile_d * cos_a + profile * sin_a * beta_d  # d cos α = −sin α dα, dα = −dβ
-        f_t_d += profile_d * sin_a - profile * cos_a * beta_d
+        for i in range(5):  # component by component: array expressions here allocated per node
+            profile_d = (_WEIGHTS[k] * (cos_a * a_d[i] - sin_a * b_d[i]) / denominator**3 + by_eps * eps_d[i]
+                         - by_alpha * beta_d[i])
+            f_n_d[i] += profile_d * cos_a + profile * sin_a * beta_d[i]  # d cos α = −sin α dα, dα = −dβ
+            f_t_d[i] += profile_d * sin_a - profile * cos_a * beta_d[i]
     scale = -viscosity * radius * length**3 / (2.0 * clearance**2) * (math.pi / 2)
     f_n, f_t, f_n_d, f_t_d = scale * f_n, scale * f_t, scale * f_n_d, scale * f_t_d
     jacobian[0] = f_n_d * n_x + f_n * nx_d - f_t_d * n_y - f_t * ny_d

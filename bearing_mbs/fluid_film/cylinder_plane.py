@@ -42,30 +42,35 @@ scalars or arrays. Units SI.
 from __future__ import annotations
 
 import numpy as np
-from numba.extending import register_jitable
+from numba import types
+from numba.extending import overload, register_jitable
 
 _HALF_PI = 0.5 * np.pi
 
 
 @register_jitable
-def _integrals(phi):
+def _integrals(phi, s, c):
     r"""The pressure integrals from −∞ to :math:`\xi = \tan\varphi`: :math:`J_k = \int\xi^k/(1+\xi^2)^3`
-    (k = 0…3) and :math:`K_k = \int\xi^k/(1+\xi^2)^2` (k = 0…2)."""
-    s, c = np.sin(phi), np.cos(phi)
-    j0 = 3.0 * phi / 8.0 + np.sin(2.0 * phi) / 4.0 + np.sin(4.0 * phi) / 32.0 + 3.0 * np.pi / 16.0
+    (k = 0…3) and :math:`K_k = \int\xi^k/(1+\xi^2)^2` (k = 0…2), with s = sin φ and c = cos φ, which every caller
+    also needs: the double angles come from them (:math:`\sin2\varphi = 2sc`, :math:`\sin4\varphi =
+    2\sin2\varphi\,(c^2 - s^2)`, within a few units of rounding of the sines'), two sines fewer in each of the
+    outlet's Newton steps, which are most of a film's cost."""
+    double = 2.0 * s * c  # sin 2φ
+    quadruple = 2.0 * double * (c * c - s * s)  # sin 4φ
+    j0 = 3.0 * phi / 8.0 + double / 4.0 + quadruple / 32.0 + 3.0 * np.pi / 16.0
     j1 = -c**4 / 4.0
-    j2 = phi / 8.0 - np.sin(4.0 * phi) / 32.0 + np.pi / 16.0
+    j2 = phi / 8.0 - quadruple / 32.0 + np.pi / 16.0
     j3 = (s**4 - 1.0) / 4.0
-    k0 = phi / 2.0 + np.sin(2.0 * phi) / 4.0 + np.pi / 4.0
+    k0 = phi / 2.0 + double / 4.0 + np.pi / 4.0
     k1 = -c * c / 2.0
-    k2 = phi / 2.0 - np.sin(2.0 * phi) / 4.0 + np.pi / 4.0
+    k2 = phi / 2.0 - double / 4.0 + np.pi / 4.0
     return j0, j1, j2, j3, k0, k1, k2
 
 
 def _outlet_condition(phi, chi):
     r""":math:`p(x_c)\cos^2\varphi_c` up to a positive factor: positive upstream of the outlet, negative past it."""
-    j0, j1, j2, _, _, _, _ = _integrals(phi)
     s, c = np.sin(phi), np.cos(phi)
+    j0, j1, j2, _, _, _, _ = _integrals(phi, s, c)
     return np.cos(chi) * (j2 * c * c - s * s * j0) + np.sin(chi) * (j1 * c * c - s * c * j0)
 
 
@@ -86,11 +91,45 @@ def _outlet_table(points: int = 2049, halvings: int = 60) -> tuple[np.ndarray, n
 DIRECTION, OUTLET = _outlet_table()
 
 
+def _tabulated_outlet(chi):
+    """φ_c [rad] of the table at the direction χ, interpolated linearly (``np.interp``); scalars or arrays."""
+    return np.interp(chi, DIRECTION, OUTLET)
+
+
+@overload(_tabulated_outlet)
+def _tabulated_outlet_compiled(chi):
+    """Compiled :func:`_tabulated_outlet`: for a scalar χ, the table's segment from its uniform spacing, then
+    ``np.interp``'s own choice of segment and arithmetic, so the value is ``np.interp``'s; numba's ``np.interp`` of a
+    scalar (a bisection and an output array) costs as much as the outlet's four Newton steps."""
+    if not isinstance(chi, types.Float):
+        return lambda chi: np.interp(chi, DIRECTION, OUTLET)
+    first, spacing, last = DIRECTION[0], DIRECTION[1] - DIRECTION[0], DIRECTION.size - 1
+
+    def lookup(chi):
+        if np.isnan(chi):
+            return chi
+        if chi >= DIRECTION[last]:
+            return OUTLET[last]
+        if chi < first:
+            return OUTLET[0]
+        j = min(int((chi - first) / spacing), last - 1)
+        while chi < DIRECTION[j]:  # np.interp's segment: DIRECTION[j] <= χ < DIRECTION[j + 1]
+            j -= 1
+        while chi >= DIRECTION[j + 1]:
+            j += 1
+        if chi == DIRECTION[j]:
+            return OUTLET[j]
+        slope = (OUTLET[j + 1] - OUTLET[j]) / (DIRECTION[j + 1] - DIRECTION[j])
+        return slope * (chi - DIRECTION[j]) + OUTLET[j]
+
+    return lookup
+
+
 @register_jitable
 def _outlet_terms(phi, chi):
     """(C, C_φ, C_χ) of the outlet condition at (φ, χ); scalars or arrays."""
-    j0, j1, j2, _, _, _, _ = _integrals(phi)
     s, c = np.sin(phi), np.cos(phi)
+    j0, j1, j2, _, _, _, _ = _integrals(phi, s, c)
     along, across = np.cos(chi), np.sin(chi)
     first, second = j2 * c * c - s * s * j0, j1 * c * c - s * c * j0
     by_phi = -2.0 * s * c * (j2 + j0) * along - (2.0 * s * c * j1 + (c * c - s * s) * j0) * across
@@ -102,7 +141,7 @@ def _outlet_angle(chi):
     """φ_c at χ: the table's value refined by four Newton steps on the outlet condition (to rounding; scalars or
     arrays); at the table's ends, where the condition's slope vanishes (no pressure zone) or φ_c = π/2 (no
     cavitation), the table's value stands."""
-    phi = np.interp(chi, DIRECTION, OUTLET)
+    phi = _tabulated_outlet(chi)
     for _ in range(4):
         condition, by_phi, _ = _outlet_terms(phi, chi)
         usable = (np.abs(np.cos(phi)) > 1e-6) * (np.abs(by_phi) > 1e-300)
@@ -135,8 +174,8 @@ def film_forces(viscosity, entrainment, sliding, gap_rate, radius, length, half_
     speed = np.sqrt(entrainment * entrainment + squeeze * squeeze)
     chi = np.arctan2(squeeze, np.abs(entrainment))
     phi = _outlet_angle(chi)
-    j0, j1, j2, j3, k0, k1, k2 = _integrals(phi)
     s, c = np.sin(phi), np.cos(phi)
+    j0, j1, j2, j3, k0, k1, k2 = _integrals(phi, s, c)
     along, across = np.cos(chi), np.sin(chi)
     load = -24.0 * viscosity * radius * length / gap * speed * (
         along * (j3 + s * s * c * c / 4.0) + across * (j2 + s * c**3 / 4.0))
@@ -150,7 +189,7 @@ def film_forces(viscosity, entrainment, sliding, gap_rate, radius, length, half_
 
 @register_jitable
 def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length, half_width, gap):
-    r"""Derivatives of :func:`film_forces`: (∂W, ∂F_c, ∂f_P), each over (h₀, ḣ₀, u, Δu), scalars. With
+    r"""Derivatives of :func:`film_forces`: (∂W, ∂F_c, ∂f_P), each a 4-tuple over (h₀, ḣ₀, u, Δu), scalars. With
     :math:`q = \dot h_0 (2R/h_0)^{1/2}` and the outlet φ_c(χ) of the tabulated direction χ (its slope on the
     table's segment), :math:`W = -(24\eta R l/h_0)(|u| A + q B)` with :math:`A = J_3 + s^2c^2/4`,
     :math:`B = J_2 + sc^3/4` (:math:`A' = sc/2`, :math:`B' = c^2/4`), and
@@ -162,23 +201,21 @@ def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length,
     speed2 = magnitude * magnitude + squeeze * squeeze
     chi = np.arctan2(squeeze, magnitude)
     phi, outlet_slope = outlet(chi)
-    j0, j1, j2, j3, k0, k1, k2 = _integrals(phi)
     s, c = np.sin(phi), np.cos(phi)
+    j0, j1, j2, j3, k0, k1, k2 = _integrals(phi, s, c)
     chi_u = -squeeze / speed2 if speed2 > 0.0 else 0.0
     chi_q = magnitude / speed2 if speed2 > 0.0 else 0.0
     sign = np.sign(entrainment)
     load_scale = 24.0 * viscosity * radius * length / gap
     a_term, b_term = j3 + s * s * c * c / 4.0, j2 + s * c**3 / 4.0
     load = -load_scale * (magnitude * a_term + squeeze * b_term)
-    load_slopes = np.zeros(4)
+    load_slopes = (0.0, 0.0, 0.0, 0.0)  # tuples, not arrays: the Jacobian calls this once per pair
     if load > 0.0:
         along_phi = magnitude * s * c / 2.0 + squeeze * c * c / 4.0
         load_u = -load_scale * (a_term + along_phi * outlet_slope * chi_u)
         load_q = -load_scale * (b_term + along_phi * outlet_slope * chi_q)
-        load_slopes[0] = -load / gap - load_q * squeeze / (2.0 * gap)
-        load_slopes[1] = load_q * root
-        load_slopes[2] = sign * load_u
-    shear_slopes = np.zeros(4)
+        load_slopes = (-load / gap - load_q * squeeze / (2.0 * gap), load_q * root, sign * load_u, 0.0)
+    shear_slopes = (0.0, 0.0, 0.0, 0.0)
     if c * c > 1e-12:
         p_term, q_term = k2 - s * s / (c * c) * k0, k1 - s / c * k0
         shear_scale = 12.0 * viscosity * length * root
@@ -187,14 +224,12 @@ def film_force_slopes(viscosity, entrainment, sliding, gap_rate, radius, length,
             along_phi = magnitude * (-2.0 * s * k0 / c**3) + squeeze * (-k0 / (c * c))
             shear_u = shear_scale * (p_term + along_phi * outlet_slope * chi_u)
             shear_q = shear_scale * (q_term + along_phi * outlet_slope * chi_q)
-            shear_slopes[0] = sign * (-shear / (2.0 * gap) - shear_q * squeeze / (2.0 * gap))
-            shear_slopes[1] = sign * shear_q * root
-            shear_slopes[2] = shear_u  # sign(u)² = 1
+            shear_slopes = (sign * (-shear / (2.0 * gap) - shear_q * squeeze / (2.0 * gap)), sign * shear_q * root,
+                            shear_u, 0.0)  # ∂/∂u: sign(u)² = 1
     span = root * gap
     angle = np.arctan(half_width / span)
     angle_slope = -1.0 / (span * span / half_width + half_width)  # d angle/d span: 0 on an unbounded plane
-    couette_slopes = np.zeros(4)
-    couette_slopes[3] = -2.0 * viscosity * length * root * angle
-    couette_slopes[0] = -2.0 * viscosity * length * sliding * (
-        -root / (2.0 * gap) * angle + root * angle_slope * span / (2.0 * gap))
+    couette_slopes = (-2.0 * viscosity * length * sliding * (-root / (2.0 * gap) * angle
+                                                              + root * angle_slope * span / (2.0 * gap)),
+                      0.0, 0.0, -2.0 * viscosity * length * root * angle)
     return load_slopes, couette_slopes, shear_slopes
