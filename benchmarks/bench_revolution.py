@@ -105,6 +105,7 @@ SETTINGS = {
     "reference_generalized_alpha_rho0.3_5e-5": reference("generalized_alpha", 5e-5, 1e-3, 0.3),
     "reference_generalized_alpha_rho0.3_1e-4": reference("generalized_alpha", 1e-4, 1e-3, 0.3),
     "reference_generalized_alpha_rho0.3_2e-4": reference("generalized_alpha", 2e-4, 1e-3, 0.3),
+    "reference_generalized_alpha_rho0_1e-4": reference("generalized_alpha", 1e-4, 1e-3, 0.0),
     "document": reference("central_difference", DOCUMENT_STEP),
 }
 #: model → its scenario overrides. ``lubricated`` runs at the document's zero clearance, the case the speed targets
@@ -224,20 +225,23 @@ def summarize(runs: dict, model: str) -> dict:
     return summary
 
 
-def scaled_bearing(rollers: int) -> list[str]:
-    """The seed bearing with ``rollers`` rollers of the same size, its pitch circle (and rings, cage and load)
-    scaled by Z/15, so the rollers' spacing and loads are the seed bearing's."""
+def scaled_bearing(model: str, rollers: int) -> list[str]:
+    """The seed bearing of ``model`` with ``rollers`` rollers of the same size, its pitch circle (and rings, cage
+    and load) scaled by Z/15, so the rollers' spacing and loads are the seed bearing's; its raceways given as the
+    model's are (by pitch and clearance, or by their diameters)."""
     k = rollers / 15
     pitch = 0.235 * k
-    return [f"bearing.rollers={rollers}", f"bearing.inner_race_diameter={pitch - 0.025}",
-            f"bearing.outer_race_diameter={pitch + 0.025}", f"bearing.cage_diameter={pitch + 0.010}",
+    bearing = spec_of(model, [])[0].bearing
+    raceways = [f"bearing.pitch_diameter={pitch}"] if bearing.diametral_clearance is not None else [
+        f"bearing.inner_race_diameter={pitch - 0.025}", f"bearing.outer_race_diameter={pitch + 0.025}"]
+    return [f"bearing.rollers={rollers}", *raceways, f"bearing.cage_diameter={pitch + 0.010}",
             f"bearing.inner_ring_bore={pitch - 0.075}", f"load.radial={68000.0 * k}"]
 
 
 def scaling(model: str, overrides: list[str]) -> dict:
     figures = {}
     for rollers in (15, 30, 60):
-        spec, scene = spec_of(model, [*overrides, *scaled_bearing(rollers)])
+        spec, scene = spec_of(model, [*overrides, *scaled_bearing(model, rollers)])
         result = revolution(spec, scene)
         stats = result.stats
         figures[str(rollers)] = {"status": result.status, "wall_time_s_per_revolution": stats.wall_time_s,
