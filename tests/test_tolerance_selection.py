@@ -182,8 +182,9 @@ def test_the_chosen_setting_replaces_the_section_and_respects_the_real_advisor(m
     # The made-up table as the lubricated bearing's, with the scene's own advisor: rk4 (measured at 1e-6 s, 3 s/s)
     # runs at min(1e-6 s, the recommended step) for 3 s/s x the step ratio, and wins at 1e-3 if that is below
     # "tight"'s 5 s/s, else "tight" wins (either way, worked out from the recommended step here).
-    monkeypatch.setattr(work_precision, "read_tables", lambda path: {"lubricated": TABLE})
     spec = lubricated(["solver.tolerance=1e-3"])
+    variant = MODELS[spec.scenario.model].work_precision.variant(spec)
+    monkeypatch.setattr(work_precision, "read_tables", lambda path: {variant: TABLE})
     scene = build_scene(spec)
     recommended = advise(scene).recommended(REFERENCE, RK4.name)
     assert recommended is not None
@@ -246,3 +247,15 @@ def test_the_dry_seed_bearing_at_1e_3_on_exudyn_runs_within_it():
                      spec.scenario.end_time)
     assert finer.success
     assert errors(spec, scene, result, finer)["cage_speed"] <= 1e-3
+
+
+@pytest.mark.parametrize(("overrides", "variant"), [
+    (["bearing.diametral_clearance=0"], "lubricated"),
+    (["bearing.diametral_clearance=-1e-5"], "lubricated"),  # a preload does not rattle either
+    ([], "lubricated_operating_clearance"),  # the shipped 69.5 um
+    (["scenario.variant=dry"], "dry"),
+])
+def test_a_lubricated_bearing_with_a_clearance_takes_its_own_table(overrides, variant):
+    """Its rollers rattle in the clearance: steps sound at zero clearance are not there (docs/numerics.md)."""
+    spec = lubricated(overrides)
+    assert MODELS[spec.scenario.model].work_precision.variant(spec) == variant
