@@ -131,8 +131,13 @@ REPOSITORY = Path(__file__).resolve().parents[1]
 SCENARIO = SCENARIOS / "seed_hss_steady.toml"
 
 
+def load(model: str, overrides: list[str]):
+    """The spec of ``model`` with the benchmark's common settings and ``overrides``."""
+    return load_spec(SCENARIO, [*MODELS[model], *COMMON, *overrides])
+
+
 def spec_of(model: str, overrides: list[str]):
-    spec = load_spec(SCENARIO, [*MODELS[model], *COMMON, *overrides])
+    spec = load(model, overrides)
     return spec, build_scene(spec)
 
 
@@ -231,7 +236,7 @@ def scaled_bearing(model: str, rollers: int) -> list[str]:
     model's are (by pitch and clearance, or by their diameters)."""
     k = rollers / 15
     pitch = 0.235 * k
-    bearing = spec_of(model, [])[0].bearing
+    bearing = load(model, []).bearing
     raceways = [f"bearing.pitch_diameter={pitch}"] if bearing.diametral_clearance is not None else [
         f"bearing.inner_race_diameter={pitch - 0.025}", f"bearing.outer_race_diameter={pitch + 0.025}"]
     return [f"bearing.rollers={rollers}", *raceways, f"bearing.cage_diameter={pitch + 0.010}",
@@ -279,13 +284,14 @@ def tables(report: dict, command: str) -> Path:
                   **report.get("measured_at", {})}
     written = []
     for model in MODELS:
-        spec, _ = spec_of(model, [])
+        spec = load(model, [])
         reference = spec.convergence.reference
         settings = []
         for name, overrides in settings_of(model).items():
             run = report["runs"][key_of(model, name)]
-            section = run.get("settings") or to_mapping(spec_of(model, overrides)[0].solver.active)
-            engine = spec_of(model, overrides)[0].solver.engine
+            solver = load(model, overrides).solver
+            section = run.get("settings") or to_mapping(solver.active)
+            engine = solver.engine
             settings.append(MeasuredSetting(
                 name=name, engine=engine, settings=section, cage_speed_error=run["cage_speed_error"],
                 slips_converged=run["slips_converged"], status=run["status"],
