@@ -80,6 +80,13 @@ def check_state(q, v, speed_limit):
 
 
 @numba.njit(cache=True, inline="always")
+def equal_steps(span, step):
+    """How many equal steps of at most ``step`` cover ``span`` [s] (a span a rounding error over a whole number of
+    steps takes that number)."""
+    return math.ceil(span / step * (1.0 - 1e-9))
+
+
+@numba.njit(cache=True, inline="always")
 def record_output(packed, index, t, state, workspace, output):
     """Store the state at output instant ``index``, with the pairs' complete outputs and the constraint forces."""
     output.t[index] = t
@@ -137,14 +144,14 @@ def integrate(method, adaptive, packed, tableau, controls, state, verlet, stages
                 if implicit is not None and not adaptive and not landing:
                     # fixed-step generalized-α: equal steps to the output instant; a step that does not divide the
                     # interval would alternate with a short landing step, and each change forms Newton's matrix
-                    h = (t_target - t) / math.ceil((t_target - t) / h_adaptive * (1.0 - 1e-9))
+                    h = (t_target - t) / equal_steps(t_target - t, h_adaptive)
             else:
                 wanted = controls.step
                 if method == CENTRAL_DIFFERENCE:
                     wanted = central_difference_step_size(controls, state.latched)
                 if steps_left == 0 or wanted != nominal:
                     nominal, t_base, taken = wanted, t, 0
-                    steps_left = math.ceil((t_target - t) / nominal * (1.0 - 1e-9))
+                    steps_left = equal_steps(t_target - t, nominal)
                     h = (t_target - t) / steps_left
                 landing = steps_left == 1
 
