@@ -49,18 +49,21 @@ BAD_INPUT = 2
 REFUSAL = re.compile(r"^error: (?P<field>[^\s=]+) = (?P<value>.*?): (?P<allowed>.+)$")
 
 _HEALTH = [HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.data_too_large]
-settings.register_profile("no-traceback", max_examples=EXAMPLES, derandomize=True, database=None, deadline=None,
+#: The default profile's name, and that of this run's.
+DEFAULT_PROFILE = "no-traceback"
+ACTIVE_PROFILE = os.environ.get("NO_TRACEBACK_PROFILE", DEFAULT_PROFILE)
+settings.register_profile(DEFAULT_PROFILE, max_examples=EXAMPLES, derandomize=True, database=None, deadline=None,
                           suppress_health_check=_HEALTH, print_blob=True)
 settings.register_profile("no-traceback-search", max_examples=int(os.environ.get("NO_TRACEBACK_EXAMPLES", "2000")),
                           derandomize=False, deadline=None, suppress_health_check=_HEALTH, print_blob=True)
 #: The profile of this run.
-PROFILE = settings.get_profile(os.environ.get("NO_TRACEBACK_PROFILE", "no-traceback"))
+PROFILE = settings.get_profile(ACTIVE_PROFILE)
 
 
 def profile(examples: int) -> settings:
     """:data:`PROFILE` with ``examples`` per model in the default run (a model whose examples are costly takes
     fewer, for the suite's time budget); the search profile keeps its own number."""
-    if os.environ.get("NO_TRACEBACK_PROFILE", "no-traceback") != "no-traceback":
+    if ACTIVE_PROFILE != DEFAULT_PROFILE:
         return PROFILE
     return settings(PROFILE, max_examples=examples)
 
