@@ -311,18 +311,23 @@ class _JointForces:
     call from Exudyn's algebraic coordinates. Equal to the norm of each joint's force output (``Force`` of a
     distance connector, ``ForceLocal`` of a prismatic joint) to rounding (measured: identical for distance
     connectors, within 4e-16 relative for prismatic joints); reading each joint's output instead costs about 6 µs
-    per joint and output row (docs/engines.md)."""
+    per joint and output row (docs/engines.md); the norms are taken in one reduction (a norm per joint cost about 3 µs,
+    a third of the step monitor's time at 5e-5 s under a profiler)."""
 
     def __init__(self, mbs, joints: list):
         self.mbs, self.joints = mbs, joints
-        self._indices = None  # the joints' algebraic coordinates, known once the system is assembled
+        self._order = self._starts = None  # the joints' algebraic coordinates, known once the system is assembled
 
-    def __call__(self) -> list[float]:
+    def __call__(self) -> np.ndarray:
+        if not self.joints:
+            return np.zeros(0)
         data = self.mbs.systemData
-        if self._indices is None:
-            self._indices = [np.asarray(data.GetObjectLTGAE(joint), dtype=int) for joint in self.joints]
-        multipliers = np.asarray(data.GetAECoordinates())
-        return [float(np.linalg.norm(multipliers[index])) for index in self._indices]
+        if self._order is None:
+            indices = [np.asarray(data.GetObjectLTGAE(joint), dtype=int) for joint in self.joints]
+            self._order = np.concatenate(indices)
+            self._starts = np.cumsum([0] + [index.size for index in indices[:-1]])
+        multipliers = np.asarray(data.GetAECoordinates())[self._order]
+        return np.sqrt(np.add.reduceat(multipliers * multipliers, self._starts))
 
 
 def _solver_failure(scene, solver, t, detail, step_advice=None) -> str:
