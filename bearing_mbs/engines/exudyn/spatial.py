@@ -1,0 +1,143 @@
+"""The Exudyn engine's rigid bodies in three dimensions: a spatial scene as Exudyn nodes and bodies, run by one of
+Exudyn's solvers.
+
+* bodies: ``NodeRigidBodyRotVecLG`` (position and rotation vector, for Exudyn's Lie-group integrators) +
+  ``ObjectRigidBody`` with the principal moments as the inertia; the node's velocity coordinates are ṙ in the world
+  frame and ω in the body frame, as in :mod:`bearing_mbs.core.spatial`;
+* moments: ``LoadTorqueVector`` with ``bodyFixed=True``; gravity: ``LoadMassProportional`` per body, only when it
+  is non-zero;
+* methods: RK4 (Exudyn's RK44 with Lie-group integration of the rotations) or generalized-α (Exudyn's Lie-group
+  generalized-α, spectral radius ``spectral_radius``);
+* output: the node's position, velocity, rotation matrix and local angular velocity at the output instants, read
+  after each accepted step (a ``PostStepUserFunction``); the rotation matrix becomes a quaternion with scipy, its
+  sign kept continuous.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
+from bearing_mbs.engines.diagnosis import output_grid
+from bearing_mbs.spec import methods
+
+#: The methods that run spatial scenes (Exudyn's solver of each: ``Method.exudyn``).
+SPATIAL_METHODS = (methods.RK4, methods.GENERALIZED_ALPHA)
+
+
+def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, output_interval: float,
+                            method: methods.Method = methods.RK4, spectral_radius: float = 0.9,
+                            newton_tolerance: float = 1e-10) -> SpatialSeries:
+    """Run the free bodies of ``scene`` from 0 to ``end_time`` [s] with Exudyn's ``method`` in equal steps of at most
+    ``step`` [s], output at the first step on or after each output instant (every ``output_interval`` [s]; the
+    series holds the times of the steps, which are the instants when the step divides the interval)."""
+    import exudyn as exu
+
+    check_times(step, end_time, output_interval)
+    if method not in SPATIAL_METHODS:
+        raise ValueError(f"method must be one of {[m.name for m in SPATIAL_METHODS]}, got "
+                         f"{getattr(method, 'name', method)!r}")
+    times = output_grid(end_time, output_interval)
+    container = exu.SystemContainer()
+    mbs = container.AddSystem()
+    nodes = _add_bodies(mbs, scene)
+    recorder = _Recorder(mbs, exu, nodes, times, scene, step)
+    mbs.SetPostStepUserFunction(recorder)
+    mbs.Assemble()
+    recorder.record(0.0, np.array([body.orientation for body in scene.bodies]))  # the initial state
+
+    settings = exu.SimulationSettings()
+    settings.solution.file.write = False
+    ti = settings.timeIntegration
+    ti.verboseMode = 0
+    ti.endTime = end_time
+    ti.numberOfSteps = math.ceil(end_time / step * (1 - 1e-9))
+    ti.explicit.useLieGroupIntegration = True
+    ti.generalizedAlpha.spectralRadius = spectral_radius
+    ti.newton.relativeTolerance = newton_tolerance
+    ti.newton.absoluteTolerance = newton_tolerance
+    try:
+        solved, detail = mbs.SolveDynamic(settings, solverType=getattr(exu.DynamicSolverType, method.exudyn)), ""
+    except Exception as error:  # noqa: BLE001 (Exudyn raises when a solver gives up)
+        solved, detail = False, str(error)
+    steps = int(mbs.sys["dynamicSolver"].it.currentStepIndex) - 1
+    series = recorder.series()
+    message = recorder.message
+    if not solved and not message:
+        message = (f"t = {recorder.time:.6g} s: Exudyn's {method.name} stopped ({detail or 'no message'}). Likely fix: a "
+                   f"smaller step than {step:.3g} s")
+    return SpatialSeries(*series, steps, message)
+
+
+def _add_bodies(mbs, scene: SpatialScene) -> list:
+    """One Lie-group rigid-body node and body per scene body, their moments and weights; returns the nodes."""
+    from exudyn.itemInterface import (
+        LoadMassProportional,
+        LoadTorqueVector,
+        MarkerBodyMass,
+        MarkerNodeRigid,
+        NodeRigidBodyRotVecLG,
+        ObjectRigidBody,
+    )
+
+    nodes = []
+    moments = scene.body_moments()
+    for body, moment in zip(scene.bodies, moments):
+        w, x, y, z = body.orientation
+        rotation_vector = Rotation.from_quat([x, y, z, w]).as_rotvec()
+        node = mbs.AddNode(NodeRigidBodyRotVecLG(referenceCoordinates=[*body.position, *rotation_vector],
+                                                 initialVelocities=[*body.velocity, *body.angular_velocity]))
+        item = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=body.mass, inertia=[*body.inertia, 0, 0, 0]))
+        if np.any(moment):
+            mbs.AddLoad(LoadTorqueVector(markerNumber=mbs.AddMarker(MarkerNodeRigid(nodeNumber=node)),
+                                         loadVector=list(moment), bodyFixed=True))
+        if any(scene.gravity):
+            mbs.AddLoad(LoadMassProportional(markerNumber=mbs.AddMarker(MarkerBodyMass(bodyNumber=item)),
+                                             loadVector=list(scene.gravity)))
+        nodes.append(node)
+    return nodes
+
+
+class _Recorder:
+    """PostStepUserFunction: a finite state after every step, the bodies' states at the output instants."""
+
+    def __init__(self, mbs, exu, nodes: list, times: np.ndarray, scene: SpatialScene, step: float):
+        self.mbs, self.nodes, self.times, self.scene, self.step = mbs, nodes, times, scene, step
+        self.time, self.message = 0.0, ""
+        kinds = exu.OutputVariableType
+        self.kinds = (kinds.Position, kinds.Velocity, kinds.RotationMatrix, kinds.AngularVelocityLocal)
+        self.rows: list[tuple] = []
+        self.margin = 1e-6 * (times[1] - times[0]) if times.size > 1 else 0.0
+
+    def record(self, t: float = 0.0, previous: np.ndarray | None = None):
+        """Store the current state at t [s]; the quaternions' signs follow ``previous`` (N, 4), else the last
+        row's."""
+        position, velocity, matrix, omega = (
+            np.array([self.mbs.GetNodeOutput(node, kind) for node in self.nodes]) for kind in self.kinds)
+        xyzw = Rotation.from_matrix(matrix.reshape(-1, 3, 3)).as_quat()
+        quaternion = np.column_stack([xyzw[:, 3], xyzw[:, :3]])
+        reference = previous if previous is not None else self.rows[-1][2]
+        quaternion *= np.where(np.sum(quaternion * reference, axis=1) < 0, -1.0, 1.0)[:, None]
+        self.rows.append((t, position, quaternion, velocity, omega))
+
+    def __call__(self, mbs, t) -> bool:
+        """After each accepted step: the guard on a finite state, output at the output instants. Returns False to
+        stop Exudyn."""
+        self.time = t
+        data = mbs.systemData  # six coordinates per node: r and the rotation vector, ṙ and ω
+        states = np.column_stack([np.reshape(data.GetODE2Coordinates(), (-1, 6)),
+                                  np.reshape(data.GetODE2Coordinates_t(), (-1, 6))])
+        finite = np.isfinite(states).all(axis=1)
+        if not finite.all():
+            self.message = nonfinite_message(self.scene, finite, self.rows[-1][4], t, self.step)
+            return False
+        if len(self.rows) < self.times.size and t >= self.times[len(self.rows)] - self.margin:
+            self.record(t)
+        return True
+
+    def series(self) -> tuple[np.ndarray, ...]:
+        """The times (T,) recorded, and the position, orientation, velocity and angular velocity (T, N, ·)."""
+        return tuple(np.array([row[k] for row in self.rows]) for k in range(5))
