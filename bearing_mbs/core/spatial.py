@@ -1,8 +1,8 @@
 """Rigid bodies in three dimensions: the engine-neutral description of a spatial scene and its output.
 
-The first part of the three-dimensional bearing (issue 31): free rigid bodies with six degrees of freedom under
-constant loads, run by both engines. Contacts, constraints and a bearing model come next; the planar
-:class:`~bearing_mbs.core.scene.Scene` is untouched.
+The first parts of the three-dimensional bearing (issue 31): rigid bodies with six degrees of freedom under constant
+loads, springs that hold a coordinate, and sliced roller–raceway contacts, run by both engines. Friction, flanges, the
+cage and a bearing model come next; the planar :class:`~bearing_mbs.core.scene.Scene` is untouched.
 
 Coordinates, per body: the centre of mass r (x, y, z) [m] in the world frame; the orientation as a unit quaternion
 p = (w, x, y, z), scalar first, that turns body-frame vectors into world-frame ones (u_world = R(p) u_body); the
@@ -76,43 +76,193 @@ class BodyMoment:
 
 
 @dataclass(frozen=True)
+class BodyForce:
+    """A constant force [N] on body ``body`` at its centre of mass, fixed in the world frame."""
+
+    body: int
+    force: tuple[float, float, float]
+
+    def __post_init__(self):
+        object.__setattr__(self, "force", _vector(f"force on body {self.body}", "force", self.force, 3))
+
+
+@dataclass(frozen=True)
+class TranslationSpring:
+    """A linear spring and damper that holds coordinate ``coordinate`` (0, 1, 2: x, y, z) of body ``body``'s centre
+    at its initial value: F = −k (r_c − r_c(0)) − c ṙ_c, stiffness k [N/m] > 0, damping c [N s/m] >= 0."""
+
+    body: int
+    coordinate: int
+    stiffness: float
+    damping: float = 0.0
+
+    def __post_init__(self):
+        if self.coordinate not in (0, 1, 2) or not (self.stiffness > 0 and self.damping >= 0):
+            raise ValueError(f"spring on body {self.body}: coordinate {self.coordinate!r} must be 0, 1 or 2, stiffness "
+                             f"{self.stiffness} N/m > 0 and damping {self.damping} N s/m >= 0")
+
+
+#: The sides of a raceway: ``inner`` is a ring's outer surface (the roller outside it), ``outer`` a bore (the roller
+#: inside it); the sign s of the interference s (R − d) + r − h.
+RACEWAY_SIDES = {"inner": 1.0, "outer": -1.0}
+
+
+@dataclass(frozen=True)
+class SlicedRaceway:
+    """A roller against a cylindrical raceway, as a line contact cut into slices (document 003's slices, in three
+    dimensions: :mod:`bearing_mbs.contact.sliced_raceway`).
+
+    roller, ring: body indices (ring −1: the ground); the roller's axis is its body axis 3. centre [m] and axis
+    (unit) of the raceway's cylinder, in the ring's frame (the world's for the ground). raceway_radius R [m] > 0;
+    side: ``inner`` or ``outer`` (:data:`RACEWAY_SIDES`); roller_radius r [m] > 0. positions: the slice centres
+    z_k [m] along the roller's axis from its centre; drops: the summed crown drops h_k [m] >= 0 of roller and
+    raceway there; width: the slice width w [m] > 0. A slice carries Q_k = C_f w Δ_k^(n−1) (Δ_k + n τ Δ̇_k) >= 0
+    at interference Δ_k > 0: coefficient C_f [N/m^(n+1)] > 0, exponent n >= 1, damping_time τ [s] >= 0
+    (stiffness-proportional damping: the slice's tangent stiffness times τ).
+    """
+
+    name: str
+    roller: int
+    ring: int
+    centre: tuple[float, float, float]
+    axis: tuple[float, float, float]
+    raceway_radius: float
+    side: str
+    roller_radius: float
+    positions: tuple[float, ...]
+    drops: tuple[float, ...]
+    width: float
+    coefficient: float
+    exponent: float
+    damping_time: float = 0.0
+
+    def __post_init__(self):
+        owner = f"raceway contact {self.name!r}"
+        for field in ("centre", "axis"):
+            object.__setattr__(self, field, _vector(owner, field, getattr(self, field), 3))
+        slices = len(self.positions)
+        for field in ("positions", "drops"):
+            object.__setattr__(self, field, _vector(owner, field, getattr(self, field), slices))
+        if abs(math.sqrt(sum(x * x for x in self.axis)) - 1.0) > UNIT_TOLERANCE:
+            raise ValueError(f"{owner}: axis {self.axis} must be a unit vector")
+        if self.side not in RACEWAY_SIDES:
+            raise ValueError(f"{owner}: side {self.side!r} must be one of {sorted(RACEWAY_SIDES)}")
+        if slices == 0 or min(self.drops) < 0:
+            raise ValueError(f"{owner}: needs at least one slice and drops >= 0, got {slices} slices, drops "
+                             f"{self.drops}")
+        for field in ("raceway_radius", "roller_radius", "width", "coefficient"):
+            if not getattr(self, field) > 0:
+                raise ValueError(f"{owner}: {field} must be > 0, got {getattr(self, field)}")
+        if not (self.exponent >= 1 and self.damping_time >= 0):
+            raise ValueError(f"{owner}: exponent {self.exponent} must be >= 1 and damping_time {self.damping_time} s "
+                             f">= 0")
+
+
+@dataclass(frozen=True)
 class SpatialScene:
-    """What gets simulated in three dimensions: the bodies, constant body-fixed moments, and gravity g [m/s²] in the
-    world frame."""
+    """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
+    springs that hold coordinates, sliced roller–raceway contacts, and gravity g [m/s²] in the world frame."""
 
     name: str
     bodies: tuple[SpatialBody, ...]
     moments: tuple[BodyMoment, ...] = ()
+    forces: tuple[BodyForce, ...] = ()
+    springs: tuple[TranslationSpring, ...] = ()
+    raceways: tuple[SlicedRaceway, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
+        owner = f"spatial scene {self.name!r}"
         if not self.bodies:
-            raise ValueError(f"spatial scene {self.name!r}: bodies must not be empty")
-        object.__setattr__(self, "gravity", _vector(f"spatial scene {self.name!r}", "gravity", self.gravity, 3))
-        for load in self.moments:
-            if not 0 <= load.body < len(self.bodies):
-                raise ValueError(f"spatial scene {self.name!r}: a moment acts on body {load.body}, but the bodies are "
-                                 f"numbered 0 to {len(self.bodies) - 1}")
+            raise ValueError(f"{owner}: bodies must not be empty")
+        object.__setattr__(self, "gravity", _vector(owner, "gravity", self.gravity, 3))
+        count = len(self.bodies)
+        for what, items in (("moment", self.moments), ("force", self.forces), ("spring", self.springs)):
+            for item in items:
+                if not 0 <= item.body < count:
+                    raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
+                                     f"{count - 1}")
+        for contact in self.raceways:
+            if not (0 <= contact.roller < count and -1 <= contact.ring < count and contact.ring != contact.roller):
+                raise ValueError(f"{owner}: raceway contact {contact.name!r} joins bodies {contact.roller} and "
+                                 f"{contact.ring}: two different bodies of 0 to {count - 1} (the ring may be -1, the "
+                                 f"ground)")
 
-    def body_moments(self) -> np.ndarray:
-        """The total body-fixed moment on each body (N, 3) [N m]."""
-        total = np.zeros((len(self.bodies), 3))
-        for load in self.moments:
-            total[load.body] += load.moment
-        return total
+    @property
+    def has_forces(self) -> bool:
+        """It has force elements beyond gravity (the engines' force kernel runs only then)."""
+        return bool(self.moments or self.forces or self.springs or self.raceways)
+
+    def packed(self) -> SpatialPacked:
+        """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""
+        bodies = self.bodies
+        slices = max((len(c.positions) for c in self.raceways), default=0)
+
+        def column(items, value, dtype=float, shape=()):
+            return np.array([value(item) for item in items], dtype=dtype).reshape((len(items), *shape))
+
+        def padded(field):
+            return np.array([list(getattr(c, field)) + [0.0] * (slices - len(c.positions)) for c in self.raceways],
+                            dtype=float).reshape(len(self.raceways), slices)
+
+        races = self.raceways
+        return SpatialPacked(
+            column(self.forces, lambda f: f.body, int), column(self.forces, lambda f: f.force, shape=(3,)),
+            column(self.moments, lambda m: m.body, int), column(self.moments, lambda m: m.moment, shape=(3,)),
+            column(self.springs, lambda s: s.body, int), column(self.springs, lambda s: s.coordinate, int),
+            column(self.springs, lambda s: bodies[s.body].position[s.coordinate]),
+            column(self.springs, lambda s: s.stiffness), column(self.springs, lambda s: s.damping),
+            column(races, lambda c: c.roller, int), column(races, lambda c: c.ring, int),
+            column(races, lambda c: c.centre, shape=(3,)), column(races, lambda c: c.axis, shape=(3,)),
+            column(races, lambda c: c.raceway_radius), column(races, lambda c: RACEWAY_SIDES[c.side]),
+            column(races, lambda c: c.roller_radius), column(races, lambda c: len(c.positions), int),
+            padded("positions"), padded("drops"), column(races, lambda c: c.width),
+            column(races, lambda c: c.coefficient), column(races, lambda c: c.exponent),
+            column(races, lambda c: c.damping_time))
+
+
+class SpatialPacked(NamedTuple):
+    """A spatial scene's force elements as arrays (see the element classes for the fields and units): world
+    forces, body moments, springs, and raceway contacts (slices padded to the longest contact's count)."""
+
+    force_body: np.ndarray
+    force: np.ndarray
+    moment_body: np.ndarray
+    moment: np.ndarray
+    spring_body: np.ndarray
+    spring_coordinate: np.ndarray
+    spring_anchor: np.ndarray
+    spring_stiffness: np.ndarray
+    spring_damping: np.ndarray
+    race_roller: np.ndarray
+    race_ring: np.ndarray
+    race_centre: np.ndarray
+    race_axis: np.ndarray
+    race_radius: np.ndarray
+    race_side: np.ndarray
+    race_roller_radius: np.ndarray
+    race_slices: np.ndarray
+    race_positions: np.ndarray
+    race_drops: np.ndarray
+    race_width: np.ndarray
+    race_coefficient: np.ndarray
+    race_exponent: np.ndarray
+    race_damping_time: np.ndarray
 
 
 class SpatialSeries(NamedTuple):
     """A spatial run's output at its output instants: time (T,) [s]; per body (T, N, ·): position r [m],
     orientation p (unit quaternion, scalar first, its sign continuous in time), velocity ṙ [m/s] (world frame),
-    angular velocity ω [rad/s] (body frame); the steps taken; ``message``: empty when the run reached its end, else
-    why it stopped (the series then ends at the last good output instant)."""
+    angular velocity ω [rad/s] (body frame); slice_loads (T, C, S) [N]: each raceway contact's slice loads Q_k; the
+    steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
+    last good output instant)."""
 
     time: np.ndarray
     position: np.ndarray
     orientation: np.ndarray
     velocity: np.ndarray
     angular_velocity: np.ndarray
+    slice_loads: np.ndarray
     steps: int
     message: str = ""
 

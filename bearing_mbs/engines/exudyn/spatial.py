@@ -4,23 +4,29 @@ Exudyn's solvers.
 * bodies: ``NodeRigidBodyRotVecLG`` (position and rotation vector, for Exudyn's Lie-group integrators) +
   ``ObjectRigidBody`` with the principal moments as the inertia; the node's velocity coordinates are ṙ in the world
   frame and ω in the body frame, as in :mod:`bearing_mbs.core.spatial`;
-* moments: ``LoadTorqueVector`` with ``bodyFixed=True``; gravity: ``LoadMassProportional`` per body, only when it
-  is non-zero;
+* force elements (forces, moments, springs, raceway contacts): one ``ObjectGenericODE2`` over all nodes whose force
+  user function calls the compiled kernel both engines use (:func:`bearing_mbs.elements.spatial.spatial_forces`);
+  its generalized forces on a Lie-group node's rotation coordinates are the moment in the body frame (measured:
+  the same motion as a body-fixed ``LoadTorqueVector``); gravity: ``LoadMassProportional`` per body, only when it is
+  non-zero;
 * methods: RK4 (Exudyn's RK44 with Lie-group integration of the rotations) or generalized-α (Exudyn's Lie-group
   generalized-α, spectral radius ``spectral_radius``);
 * output: the node's position, velocity, rotation matrix and local angular velocity at the output instants, read
-  after each accepted step (a ``PostStepUserFunction``); the rotation matrix becomes a quaternion with scipy, its
-  sign kept continuous.
+  after each accepted step (a ``PostStepUserFunction``), and the slice loads evaluated there; the rotation matrix
+  becomes a quaternion with scipy, its sign kept continuous.
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
+from bearing_mbs.elements.spatial import spatial_generalized_forces
 from bearing_mbs.engines.diagnosis import output_grid
 from bearing_mbs.spec import methods
 
@@ -43,8 +49,8 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
     times = output_grid(end_time, output_interval)
     container = exu.SystemContainer()
     mbs = container.AddSystem()
-    nodes = _add_bodies(mbs, scene)
-    recorder = _Recorder(mbs, exu, nodes, times, scene, step)
+    nodes, forces = _add_bodies(mbs, scene)
+    recorder = _Recorder(mbs, exu, nodes, times, scene, step, forces)
     mbs.SetPostStepUserFunction(recorder)
     mbs.Assemble()
     recorder.record(0.0, np.array([body.orientation for body in scene.bodies]))  # the initial state
@@ -60,7 +66,9 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
     ti.newton.relativeTolerance = newton_tolerance
     ti.newton.absoluteTolerance = newton_tolerance
     try:
-        solved, detail = mbs.SolveDynamic(settings, solverType=getattr(exu.DynamicSolverType, method.exudyn)), ""
+        with contextlib.redirect_stdout(io.StringIO()):  # Exudyn's console notes (its warning on the allocations of
+            # the Python force function each step, which is how user functions work)
+            solved, detail = mbs.SolveDynamic(settings, solverType=getattr(exu.DynamicSolverType, method.exudyn)), ""
     except Exception as error:  # noqa: BLE001 (Exudyn raises when a solver gives up)
         solved, detail = False, str(error)
     steps = int(mbs.sys["dynamicSolver"].it.currentStepIndex) - 1
@@ -72,40 +80,66 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
     return SpatialSeries(*series, steps, message)
 
 
-def _add_bodies(mbs, scene: SpatialScene) -> list:
-    """One Lie-group rigid-body node and body per scene body, their moments and weights; returns the nodes."""
+def _add_bodies(mbs, scene: SpatialScene) -> tuple[list, _Forces]:
+    """One Lie-group rigid-body node and body per scene body (reference coordinates zero, so that a node's
+    coordinates are r and φ themselves), the force elements' object and the weights; returns the nodes and the
+    forces."""
     from exudyn.itemInterface import (
         LoadMassProportional,
-        LoadTorqueVector,
         MarkerBodyMass,
-        MarkerNodeRigid,
         NodeRigidBodyRotVecLG,
+        ObjectGenericODE2,
         ObjectRigidBody,
     )
 
     nodes = []
-    moments = scene.body_moments()
-    for body, moment in zip(scene.bodies, moments):
+    for body in scene.bodies:
         w, x, y, z = body.orientation
         rotation_vector = Rotation.from_quat([x, y, z, w]).as_rotvec()
-        node = mbs.AddNode(NodeRigidBodyRotVecLG(referenceCoordinates=[*body.position, *rotation_vector],
+        node = mbs.AddNode(NodeRigidBodyRotVecLG(referenceCoordinates=[0.0] * 6,
+                                                 initialCoordinates=[*body.position, *rotation_vector],
                                                  initialVelocities=[*body.velocity, *body.angular_velocity]))
         item = mbs.AddObject(ObjectRigidBody(nodeNumber=node, mass=body.mass, inertia=[*body.inertia, 0, 0, 0]))
-        if np.any(moment):
-            mbs.AddLoad(LoadTorqueVector(markerNumber=mbs.AddMarker(MarkerNodeRigid(nodeNumber=node)),
-                                         loadVector=list(moment), bodyFixed=True))
         if any(scene.gravity):
             mbs.AddLoad(LoadMassProportional(markerNumber=mbs.AddMarker(MarkerBodyMass(bodyNumber=item)),
                                              loadVector=list(scene.gravity)))
         nodes.append(node)
-    return nodes
+    forces = _Forces(scene)
+    if scene.has_forces:
+        size = 6 * len(nodes)
+        mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, massMatrix=np.zeros((size, size)),
+                                        forceUserFunction=forces))
+    return nodes, forces
+
+
+class _Forces:
+    """The force user function of the generic ODE2 object (and the slice loads of its last evaluation)."""
+
+    def __init__(self, scene: SpatialScene):
+        count = len(scene.bodies)
+        self.packed = scene.packed()
+        self.work = (np.empty((count, 3, 3)), *(np.empty((count, 3)) for _ in range(4)),
+                     np.zeros(self.packed.race_positions.shape))
+        self.out = np.empty(6 * count)
+
+    def evaluate(self, q, q_t) -> np.ndarray:
+        spatial_generalized_forces(self.packed, np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), *self.work,
+                                   self.out)
+        return self.out
+
+    def __call__(self, mbs, t, item_number, q, q_t):
+        return self.evaluate(q, q_t).tolist()
+
+    @property
+    def slice_loads(self) -> np.ndarray:
+        return self.work[-1]
 
 
 class _Recorder:
     """PostStepUserFunction: a finite state after every step, the bodies' states at the output instants."""
 
-    def __init__(self, mbs, exu, nodes: list, times: np.ndarray, scene: SpatialScene, step: float):
-        self.mbs, self.nodes, self.times, self.scene, self.step = mbs, nodes, times, scene, step
+    def __init__(self, mbs, exu, nodes: list, times: np.ndarray, scene: SpatialScene, step: float, forces: _Forces):
+        self.mbs, self.nodes, self.times, self.scene, self.step, self.forces = mbs, nodes, times, scene, step, forces
         self.time, self.message = 0.0, ""
         kinds = exu.OutputVariableType
         self.kinds = (kinds.Position, kinds.Velocity, kinds.RotationMatrix, kinds.AngularVelocityLocal)
@@ -121,7 +155,9 @@ class _Recorder:
         quaternion = np.column_stack([xyzw[:, 3], xyzw[:, :3]])
         reference = previous if previous is not None else self.rows[-1][2]
         quaternion *= np.where(np.sum(quaternion * reference, axis=1) < 0, -1.0, 1.0)[:, None]
-        self.rows.append((t, position, quaternion, velocity, omega))
+        data = self.mbs.systemData
+        self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())  # the slice loads here
+        self.rows.append((t, position, quaternion, velocity, omega, self.forces.slice_loads.copy()))
 
     def __call__(self, mbs, t) -> bool:
         """After each accepted step: the guard on a finite state, output at the output instants. Returns False to
@@ -139,5 +175,6 @@ class _Recorder:
         return True
 
     def series(self) -> tuple[np.ndarray, ...]:
-        """The times (T,) recorded, and the position, orientation, velocity and angular velocity (T, N, ·)."""
-        return tuple(np.array([row[k] for row in self.rows]) for k in range(5))
+        """The times (T,) recorded, the position, orientation, velocity and angular velocity (T, N, ·) and the slice
+        loads (T, C, S)."""
+        return tuple(np.array([row[k] for row in self.rows]) for k in range(6))
