@@ -137,3 +137,73 @@ def test_bad_spatial_force_elements_are_refused():
     contact = SlicedRaceway("c", 0, 0, (0, 0, 0), (0, 0, 1), 0.1, "inner", 0.01, (0.0,), (0.0,), 0.01, 1e10, 10 / 9)
     with pytest.raises(ValueError):  # a roller against itself
         SpatialScene("s", (body,), raceways=(contact,))
+
+
+def test_a_free_ring_and_roller_keep_their_momentum():
+    """No external load: a tilted, spinning ring (the raceway on a body) strikes a roller and they part. The contact
+    forces act in pairs with their moments, so the total linear momentum and the angular momentum about the origin,
+    Σ (r × m ṙ + R I ω), stay what they were (to the integrator's accuracy, 1e-9 of their scale), while the roller
+    picks up a large part of both (the contact did act)."""
+    rollers = CROWNED.rollers
+    r, m = rollers.roller_diameter / 2, rollers.roller_mass
+    pitch_radius = rollers.pitch_diameter / 2
+    ring = SpatialBody("ring", 2.0, (4e-3, 4e-3, 7e-3), orientation=tuple(
+        np.roll(Rotation.from_rotvec([0.0, 3e-4, 0.0]).as_quat(), 1)), velocity=(0.5, 0.02, 0.0),
+        angular_velocity=(0.3, -0.2, 50.0))
+    roller = SpatialBody("roller", m, (m * (3 * r**2 + LENGTH**2) / 12,) * 2 + (m * r**2 / 2,),
+                         position=(pitch_radius + 1e-6, 0.0, 0.001), angular_velocity=(0.0, 0.0, -20.0))
+    contact = SlicedRaceway("inner", roller=1, ring=0, centre=(0, 0, 0), axis=(0, 0, 1),
+                            raceway_radius=pitch_radius - r, side="inner", roller_radius=r,
+                            positions=tuple(CROWNED.slice_positions), drops=tuple(CROWNED.inner_drops),
+                            width=CROWNED.slice_width, exponent=10 / 9, damping_time=DAMPING_TIME,
+                            coefficient=float(slice_coefficient(rollers.inner_stiffness, LENGTH)))
+    scene = SpatialScene("ring and roller", (ring, roller), raceways=(contact,))
+    for run in ENGINES.values():
+        series = run(scene, 2e-7, 2e-4, 1e-5)
+        assert series.success, series.message
+        assert series.slice_loads[:, 0].sum(axis=1).max() > 100.0  # they met
+        masses = np.array([ring.mass, roller.mass])
+        linear = np.einsum("b,tbj->tj", masses, series.velocity)
+        w = series.orientation
+        rotations = Rotation.from_quat(np.concatenate([w[..., 1:], w[..., :1]], axis=-1).reshape(-1, 4)).as_matrix()
+        inertia = np.array([ring.inertia, roller.inertia])
+        spin = np.einsum("tbij,tbj->tbi", rotations.reshape(*w.shape[:2], 3, 3), inertia * series.angular_velocity)
+        angular = (np.cross(series.position, masses[None, :, None] * series.velocity) + spin).sum(axis=1)
+        scale_linear, scale_angular = np.abs(linear[0]).max(), np.abs(angular[0]).max()
+        np.testing.assert_allclose(linear, np.broadcast_to(linear[0], linear.shape), rtol=0, atol=1e-9 * scale_linear)
+        np.testing.assert_allclose(angular, np.broadcast_to(angular[0], angular.shape), rtol=0,
+                                   atol=1e-9 * scale_angular)
+        assert np.abs(roller.mass * series.velocity[-1, 1]).max() > 0.05 * scale_linear  # the roller was pushed
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_common_rigid_motion_does_not_damp(engine):
+    """Ring and roller pressed together, at rest or turning and moving together as one rigid body: the interference
+    does not change, so the damped slice loads at the start are the static ones (1e-9 of the largest); a wrong
+    relative velocity of the ring's material point would damp the common motion."""
+    rollers = CROWNED.rollers
+    r, m = rollers.roller_diameter / 2, rollers.roller_mass
+    pitch_radius = rollers.pitch_diameter / 2
+    spin, drift = np.array([0.4, -0.3, 80.0]), np.array([0.2, -0.1, 0.05])  # rad/s, m/s
+    tilt = Rotation.from_rotvec([0.0, 4e-4, 0.0])
+    centre = tilt.apply([pitch_radius - 1e-5, 0.0, 0.0])  # the roller 10 µm into the raceway, on the tilted ring
+
+    def scene(moving: bool) -> SpatialScene:
+        w = spin if moving else np.zeros(3)
+        ring = SpatialBody("ring", 2.0, (4e-3, 4e-3, 7e-3), orientation=tuple(np.roll(tilt.as_quat(), 1)),
+                           velocity=tuple(drift if moving else np.zeros(3)), angular_velocity=tuple(w))
+        world_spin = tilt.apply(w)  # the ring's ω in the world frame; the roller turns with it
+        roller = SpatialBody("roller", m, (m * (3 * r**2 + LENGTH**2) / 12,) * 2 + (m * r**2 / 2,), position=tuple(centre),
+                             orientation=tuple(np.roll(tilt.as_quat(), 1)),
+                             velocity=tuple((drift + np.cross(world_spin, centre)) if moving else np.zeros(3)),
+                             angular_velocity=tuple(w))
+        contact = SlicedRaceway("inner", roller=1, ring=0, centre=(0, 0, 0), axis=(0, 0, 1),
+                                raceway_radius=pitch_radius - r, side="inner", roller_radius=r,
+                                positions=tuple(CROWNED.slice_positions), drops=tuple(CROWNED.inner_drops),
+                                width=CROWNED.slice_width, exponent=10 / 9, damping_time=1e-4,
+                                coefficient=float(slice_coefficient(rollers.inner_stiffness, LENGTH)))
+        return SpatialScene("pressed", (ring, roller), raceways=(contact,))
+
+    at_rest, moving = (ENGINES[engine](scene(flag), 1e-7, 1e-7, 1e-7).slice_loads[0, 0] for flag in (False, True))
+    assert at_rest.max() > 100.0  # N: pressed
+    np.testing.assert_allclose(moving, at_rest, rtol=0, atol=1e-9 * at_rest.max())
