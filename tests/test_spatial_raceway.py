@@ -9,6 +9,10 @@ References (independent of the code under test: :mod:`bearing_mbs.contact.sliced
   and take the same displacement and tilt within 1 % (measured 0.06 % and 0.001 %);
 * a straight roller, aligned, equal laws on both sides: the two approaches are equal, so each contact carries
   Q = K ((u_r − 2 J_b)/2)^n with Palmgren's K and n = 10/9 (closed form, 1e-6 relative);
+* a spinning roller set down on a raceway (radius 10 m, nearly a plane) under a constant normal force: it slides
+  with Coulomb friction μF until it rolls, v(t) = μF t/m, ω(t) = ω₀ − μF r t/I, then rolls at v = ω₀ r I/(I + m r²)
+  (the textbook result for a cylinder set spinning on a plane); within 1e-3 of v_f and ω₀ (measured 1.4e-4: the
+  regularisation near the end of sliding, and the raceway's curvature);
 * the two engines against each other (1e-6 relative).
 """
 
@@ -140,8 +144,8 @@ def test_bad_spatial_force_elements_are_refused():
 
 
 def test_a_free_ring_and_roller_keep_their_momentum():
-    """No external load: a tilted, spinning ring (the raceway on a body) strikes a roller and they part. The contact
-    forces act in pairs with their moments, so the total linear momentum and the angular momentum about the origin,
+    """No external load: a tilted, spinning ring (the raceway on a body) strikes a roller and they part, with
+    friction. The contact forces act in pairs with their moments, so the total linear momentum and the angular momentum about the origin,
     Σ (r × m ṙ + R I ω), stay what they were (to the integrator's accuracy, 1e-9 of their scale), while the roller
     picks up a large part of both (the contact did act)."""
     rollers = CROWNED.rollers
@@ -156,7 +160,8 @@ def test_a_free_ring_and_roller_keep_their_momentum():
                             raceway_radius=pitch_radius - r, side="inner", roller_radius=r,
                             positions=tuple(CROWNED.slice_positions), drops=tuple(CROWNED.inner_drops),
                             width=CROWNED.slice_width, exponent=10 / 9, damping_time=DAMPING_TIME,
-                            coefficient=float(slice_coefficient(rollers.inner_stiffness, LENGTH)))
+                            coefficient=float(slice_coefficient(rollers.inner_stiffness, LENGTH)),
+                            friction_coefficient=0.1, regularisation_speed=1e-3)
     scene = SpatialScene("ring and roller", (ring, roller), raceways=(contact,))
     for run in ENGINES.values():
         series = run(scene, 2e-7, 2e-4, 1e-5)
@@ -207,3 +212,31 @@ def test_a_common_rigid_motion_does_not_damp(engine):
     at_rest, moving = (ENGINES[engine](scene(flag), 1e-7, 1e-7, 1e-7).slice_loads[0, 0] for flag in (False, True))
     assert at_rest.max() > 100.0  # N: pressed
     np.testing.assert_allclose(moving, at_rest, rtol=0, atol=1e-9 * at_rest.max())
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_spinning_roller_set_on_a_raceway_slides_then_rolls(engine):
+    rollers = STRAIGHT.rollers
+    r, m = rollers.roller_diameter / 2, rollers.roller_mass
+    axial, transverse = m * r**2 / 2, m * (3 * r**2 + LENGTH**2) / 12
+    radius, normal, mu, spin = 10.0, 20.0, 0.1, 10.0  # m, N, -, rad/s
+    stiffness, exponent = rollers.inner_stiffness, rollers.inner_exponent
+    approach = (normal / stiffness) ** (1 / exponent)  # set down at the static approach
+    contact = SlicedRaceway("plane", roller=0, ring=-1, centre=(0, 0, 0), axis=(0, 0, 1), raceway_radius=radius,
+                            side="inner", roller_radius=r, positions=tuple(STRAIGHT.slice_positions),
+                            drops=tuple(STRAIGHT.inner_drops), width=STRAIGHT.slice_width, exponent=exponent,
+                            damping_time=DAMPING_TIME, coefficient=float(slice_coefficient(stiffness, LENGTH)),
+                            friction_coefficient=mu, regularisation_speed=1e-4)
+    roller = SpatialBody("roller", m, (transverse, transverse, axial), position=(radius + r - approach, 0, 0),
+                         angular_velocity=(0, 0, spin))
+    scene = SpatialScene("set down spinning", (roller,), forces=(BodyForce(0, (-normal, 0, 0)),),
+                         springs=(TranslationSpring(0, 2, 1e8, 1e3),), raceways=(contact,))
+    acceleration, deceleration = mu * normal / m, mu * normal * r / axial
+    rolls_at = spin * r / (acceleration + deceleration * r)
+    series = ENGINES[engine](scene, 2e-6, 2 * rolls_at, rolls_at / 10)
+    assert series.success, series.message
+    t = np.minimum(series.time, rolls_at)
+    final_speed = spin * r * axial / (axial + m * r**2)
+    np.testing.assert_allclose(series.velocity[:, 0, 1], acceleration * t, rtol=0, atol=1e-3 * final_speed)
+    np.testing.assert_allclose(series.angular_velocity[:, 0, 2], spin - deceleration * t, rtol=0, atol=1e-3 * spin)
+    np.testing.assert_allclose(series.velocity[-1, 0, 1], final_speed, rtol=1e-3)

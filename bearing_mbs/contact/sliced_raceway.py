@@ -18,8 +18,10 @@ carries
 
 the slice law of document 003 (eqs. 14–16) with stiffness-proportional damping (τ [s]: the slice's tangent stiffness
 n C_f w Δ^(n−1) times τ), Δ̇_k = −s n_k·(ċ_k − v_ring(c_k)) from the roller's and the ring's rigid motions. The
-force s Q_k n_k acts on the roller at its surface point c_k − s r n_k, and its reaction on the ring there; its moment
-about the roller's centre is z_k R_b e₃ × s Q_k n_k (the part along n_k has no arm).
+force s Q_k n_k acts on the roller at its surface point P_k = c_k − s r n_k, and its reaction on the ring there; its
+moment about the roller's centre is z_k R_b e₃ × s Q_k n_k (the part along n_k has no arm). The slice's friction
+opposes the sliding velocity v_s of the roller's material point at P_k against the ring's, in the tangent plane:
+F_T = −μ Q_k erf(2|v_s|/v_reg) v_s/|v_s| (the planar model's ``erf`` law, :mod:`.friction`, on the speed), at P_k.
 """
 
 from __future__ import annotations
@@ -27,6 +29,8 @@ from __future__ import annotations
 import math
 
 import numba
+
+from bearing_mbs.contact.friction import erf_sign
 
 
 @numba.njit(cache=True, inline="always")
@@ -46,6 +50,7 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
     s, radius, roller_radius = packed.race_side[contact], packed.race_radius[contact], packed.race_roller_radius[contact]
     coefficient = packed.race_coefficient[contact] * packed.race_width[contact]
     exponent, tau = packed.race_exponent[contact], packed.race_damping_time[contact]
+    mu, regularisation = packed.race_friction[contact], packed.race_regularisation_speed[contact]
     # the raceway's axis in the world frame
     o0, o1, o2 = packed.race_centre[contact, 0], packed.race_centre[contact, 1], packed.race_centre[contact, 2]
     a0, a1, a2 = packed.race_axis[contact, 0], packed.race_axis[contact, 1], packed.race_axis[contact, 2]
@@ -70,30 +75,36 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         if interference <= 0.0 or d == 0.0:
             continue
         n0, n1, n2 = d0 / d, d1 / d, d2 / d
-        # the slice centre's velocity relative to the ring's material point there
-        u0 = velocity[b, 0] + z * (w1 * e2 - w2 * e1)
-        u1 = velocity[b, 1] + z * (w2 * e0 - w0 * e2)
-        u2 = velocity[b, 2] + z * (w0 * e1 - w1 * e0)
+        # the arm of the roller's material point at P_k, and its velocity relative to the ring's there
+        l0, l1, l2 = z * e0 - s * roller_radius * n0, z * e1 - s * roller_radius * n1, z * e2 - s * roller_radius * n2
+        u0 = velocity[b, 0] + w1 * l2 - w2 * l1
+        u1 = velocity[b, 1] + w2 * l0 - w0 * l2
+        u2 = velocity[b, 2] + w0 * l1 - w1 * l0
         if g >= 0:
-            p0, p1, p2 = c0 - position[g, 0], c1 - position[g, 1], c2 - position[g, 2]
+            p0, p1, p2 = position[b, 0] + l0 - position[g, 0], position[b, 1] + l1 - position[g, 1], \
+                position[b, 2] + l2 - position[g, 2]
             v0, v1, v2 = omega_world[g, 0], omega_world[g, 1], omega_world[g, 2]
             u0 -= velocity[g, 0] + v1 * p2 - v2 * p1
             u1 -= velocity[g, 1] + v2 * p0 - v0 * p2
             u2 -= velocity[g, 2] + v0 * p1 - v1 * p0
-        rate = -s * (n0 * u0 + n1 * u1 + n2 * u2)
+        normal_speed = n0 * u0 + n1 * u1 + n2 * u2
+        rate = -s * normal_speed
         load = max(coefficient * interference ** (exponent - 1.0) * (interference + exponent * tau * rate), 0.0)
         slice_loads[contact, k] = load
-        f = s * load  # the force on the roller is f n
-        force[b, 0] += f * n0
-        force[b, 1] += f * n1
-        force[b, 2] += f * n2
-        _cross_add(z * e0, z * e1, z * e2, n0, n1, n2, moment, b, f)
+        f = s * load  # the normal force on the roller is f n
+        f0, f1, f2 = f * n0, f * n1, f * n2
+        if mu > 0.0:  # friction against the sliding velocity in the tangent plane
+            t0, t1, t2 = u0 - normal_speed * n0, u1 - normal_speed * n1, u2 - normal_speed * n2
+            speed = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
+            if speed > 0.0:
+                friction = -mu * load * erf_sign(speed, regularisation) / speed
+                f0, f1, f2 = f0 + friction * t0, f1 + friction * t1, f2 + friction * t2
+        force[b, 0] += f0
+        force[b, 1] += f1
+        force[b, 2] += f2
+        _cross_add(l0, l1, l2, f0, f1, f2, moment, b, 1.0)
         if g >= 0:
-            force[g, 0] -= f * n0
-            force[g, 1] -= f * n1
-            force[g, 2] -= f * n2
-            # at the roller's surface point c − s r n, about the ring's centre
-            q0 = c0 - s * roller_radius * n0 - position[g, 0]
-            q1 = c1 - s * roller_radius * n1 - position[g, 1]
-            q2 = c2 - s * roller_radius * n2 - position[g, 2]
-            _cross_add(q0, q1, q2, n0, n1, n2, moment, g, -f)
+            force[g, 0] -= f0
+            force[g, 1] -= f1
+            force[g, 2] -= f2
+            _cross_add(p0, p1, p2, f0, f1, f2, moment, g, -1.0)  # at P_k, about the ring's centre

@@ -118,7 +118,9 @@ class SlicedRaceway:
     z_k [m] along the roller's axis from its centre; drops: the summed crown drops h_k [m] >= 0 of roller and
     raceway there; width: the slice width w [m] > 0. A slice carries Q_k = C_f w Δ_k^(n−1) (Δ_k + n τ Δ̇_k) >= 0
     at interference Δ_k > 0: coefficient C_f [N/m^(n+1)] > 0, exponent n >= 1, damping_time τ [s] >= 0
-    (stiffness-proportional damping: the slice's tangent stiffness times τ).
+    (stiffness-proportional damping: the slice's tangent stiffness times τ). Each slice's friction opposes its
+    sliding velocity v_s in the tangent plane: μ Q_k erf(2|v_s|/v_reg), the planar model's ``erf`` law, with
+    friction_coefficient μ >= 0 and regularisation_speed v_reg [m/s] > 0.
     """
 
     name: str
@@ -135,6 +137,8 @@ class SlicedRaceway:
     coefficient: float
     exponent: float
     damping_time: float = 0.0
+    friction_coefficient: float = 0.0
+    regularisation_speed: float = 1e-2
 
     def __post_init__(self):
         owner = f"raceway contact {self.name!r}"
@@ -156,6 +160,9 @@ class SlicedRaceway:
         if not (self.exponent >= 1 and self.damping_time >= 0):
             raise ValueError(f"{owner}: exponent {self.exponent} must be >= 1 and damping_time {self.damping_time} s "
                              f">= 0")
+        if not (self.friction_coefficient >= 0 and self.regularisation_speed > 0):
+            raise ValueError(f"{owner}: friction_coefficient {self.friction_coefficient} must be >= 0 and "
+                             f"regularisation_speed {self.regularisation_speed} m/s > 0")
 
 
 @dataclass(frozen=True)
@@ -218,7 +225,8 @@ class SpatialScene:
             column(races, lambda c: c.roller_radius), column(races, lambda c: len(c.positions), int),
             padded("positions"), padded("drops"), column(races, lambda c: c.width),
             column(races, lambda c: c.coefficient), column(races, lambda c: c.exponent),
-            column(races, lambda c: c.damping_time))
+            column(races, lambda c: c.damping_time), column(races, lambda c: c.friction_coefficient),
+            column(races, lambda c: c.regularisation_speed))
 
 
 class SpatialPacked(NamedTuple):
@@ -248,6 +256,8 @@ class SpatialPacked(NamedTuple):
     race_coefficient: np.ndarray
     race_exponent: np.ndarray
     race_damping_time: np.ndarray
+    race_friction: np.ndarray
+    race_regularisation_speed: np.ndarray
 
 
 class SpatialSeries(NamedTuple):
