@@ -30,15 +30,7 @@ import math
 
 import numba
 
-from bearing_mbs.contact.friction import erf_sign
-
-
-@numba.njit(cache=True, inline="always")
-def _cross_add(a0, a1, a2, b0, b1, b2, out, row, factor):
-    """out[row] += factor · (a × b)."""
-    out[row, 0] += factor * (a1 * b2 - a2 * b1)
-    out[row, 1] += factor * (a2 * b0 - a0 * b2)
-    out[row, 2] += factor * (a0 * b1 - a1 * b0)
+from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
 
 
 @numba.njit(cache=True)
@@ -62,7 +54,6 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         a0, a1, a2 = (rg[0, 0] * a0 + rg[0, 1] * a1 + rg[0, 2] * a2, rg[1, 0] * a0 + rg[1, 1] * a1 + rg[1, 2] * a2,
                       rg[2, 0] * a0 + rg[2, 1] * a1 + rg[2, 2] * a2)
     e0, e1, e2 = rotation[b, 0, 2], rotation[b, 1, 2], rotation[b, 2, 2]  # the roller's axis
-    w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
     for k in range(packed.race_slices[contact]):
         z = packed.race_positions[contact, k]
         c0, c1, c2 = position[b, 0] + z * e0, position[b, 1] + z * e1, position[b, 2] + z * e2
@@ -77,34 +68,9 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         n0, n1, n2 = d0 / d, d1 / d, d2 / d
         # the arm of the roller's material point at P_k, and its velocity relative to the ring's there
         l0, l1, l2 = z * e0 - s * roller_radius * n0, z * e1 - s * roller_radius * n1, z * e2 - s * roller_radius * n2
-        u0 = velocity[b, 0] + w1 * l2 - w2 * l1
-        u1 = velocity[b, 1] + w2 * l0 - w0 * l2
-        u2 = velocity[b, 2] + w0 * l1 - w1 * l0
-        if g >= 0:
-            p0, p1, p2 = position[b, 0] + l0 - position[g, 0], position[b, 1] + l1 - position[g, 1], \
-                position[b, 2] + l2 - position[g, 2]
-            v0, v1, v2 = omega_world[g, 0], omega_world[g, 1], omega_world[g, 2]
-            u0 -= velocity[g, 0] + v1 * p2 - v2 * p1
-            u1 -= velocity[g, 1] + v2 * p0 - v0 * p2
-            u2 -= velocity[g, 2] + v0 * p1 - v1 * p0
-        normal_speed = n0 * u0 + n1 * u1 + n2 * u2
-        rate = -s * normal_speed
+        u0, u1, u2, p0, p1, p2 = relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world)
+        rate = -s * (n0 * u0 + n1 * u1 + n2 * u2)
         load = max(coefficient * interference ** (exponent - 1.0) * (interference + exponent * tau * rate), 0.0)
         slice_loads[contact, k] = load
-        f = s * load  # the normal force on the roller is f n
-        f0, f1, f2 = f * n0, f * n1, f * n2
-        if mu > 0.0:  # friction against the sliding velocity in the tangent plane
-            t0, t1, t2 = u0 - normal_speed * n0, u1 - normal_speed * n1, u2 - normal_speed * n2
-            speed = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
-            if speed > 0.0:
-                friction = -mu * load * erf_sign(speed, regularisation) / speed
-                f0, f1, f2 = f0 + friction * t0, f1 + friction * t1, f2 + friction * t2
-        force[b, 0] += f0
-        force[b, 1] += f1
-        force[b, 2] += f2
-        _cross_add(l0, l1, l2, f0, f1, f2, moment, b, 1.0)
-        if g >= 0:
-            force[g, 0] -= f0
-            force[g, 1] -= f1
-            force[g, 2] -= f2
-            _cross_add(p0, p1, p2, f0, f1, f2, moment, g, -1.0)  # at P_k, about the ring's centre
+        apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load, u0, u1, u2, mu, regularisation, force,
+                      moment)

@@ -1,8 +1,8 @@
 """Rigid bodies in three dimensions: the engine-neutral description of a spatial scene and its output.
 
 The first parts of the three-dimensional bearing (issue 31): rigid bodies with six degrees of freedom under constant
-loads, springs that hold a coordinate, and sliced roller–raceway contacts, run by both engines. Friction, flanges, the
-cage and a bearing model come next; the planar :class:`~bearing_mbs.core.scene.Scene` is untouched.
+loads, springs that hold a coordinate, sliced roller–raceway contacts and roller end–flange contacts, run by both
+engines. EHL traction, the cage and a bearing model come next; the planar :class:`~bearing_mbs.core.scene.Scene` is untouched.
 
 Coordinates, per body: the centre of mass r (x, y, z) [m] in the world frame; the orientation as a unit quaternion
 p = (w, x, y, z), scalar first, that turns body-frame vectors into world-frame ones (u_world = R(p) u_body); the
@@ -166,6 +166,54 @@ class SlicedRaceway:
 
 
 @dataclass(frozen=True)
+class FlangeContact:
+    """A roller's spherical end against a flange: a point contact (:mod:`bearing_mbs.contact.flange`).
+
+    roller, ring: body indices (ring −1: the ground). end: +1 or −1, the roller's end at z = end · half_length [m]
+    along its axis (body axis 3); end_radius R_e [m] > 0: the radius of that end's sphere, whose centre lies on the
+    axis at end · (half_length − R_e). The flange is the plane through ``point`` with unit ``normal`` (pointing
+    towards the roller), both in the ring's frame, within the band ``band`` = (inner, outer) [m] of distance from the
+    line through ``point`` along ``normal`` (the ring's axis: the flange's radial extent); outside it there is no
+    contact. The load is Q = K δ^n (1 + n τ δ̇/δ) >= 0 at approach δ > 0: stiffness K [N/m^n] > 0 (Hertz's, for a
+    sphere on a plane, with n = 3/2), damping_time τ [s] >= 0; friction μ Q erf(2|v_s|/v_reg) against the sliding
+    velocity, friction_coefficient μ >= 0, regularisation_speed v_reg [m/s] > 0.
+    """
+
+    name: str
+    roller: int
+    ring: int
+    end: int
+    half_length: float
+    end_radius: float
+    point: tuple[float, float, float]
+    normal: tuple[float, float, float]
+    band: tuple[float, float]
+    stiffness: float
+    exponent: float = 1.5
+    damping_time: float = 0.0
+    friction_coefficient: float = 0.0
+    regularisation_speed: float = 1e-2
+
+    def __post_init__(self):
+        owner = f"flange contact {self.name!r}"
+        for field in ("point", "normal"):
+            object.__setattr__(self, field, _vector(owner, field, getattr(self, field), 3))
+        object.__setattr__(self, "band", _vector(owner, "band", self.band, 2))
+        if abs(math.sqrt(sum(x * x for x in self.normal)) - 1.0) > UNIT_TOLERANCE:
+            raise ValueError(f"{owner}: normal {self.normal} must be a unit vector")
+        if self.end not in (1, -1):
+            raise ValueError(f"{owner}: end {self.end!r} must be +1 or -1")
+        if not (0 < self.end_radius and 0 < self.half_length and 0 <= self.band[0] < self.band[1]):
+            raise ValueError(f"{owner}: end_radius {self.end_radius} m and half_length {self.half_length} m must be "
+                             f"> 0, band {self.band} m an interval 0 <= inner < outer")
+        if not (self.stiffness > 0 and self.exponent >= 1 and self.damping_time >= 0
+                and self.friction_coefficient >= 0 and self.regularisation_speed > 0):
+            raise ValueError(f"{owner}: stiffness {self.stiffness} must be > 0, exponent {self.exponent} >= 1, "
+                             f"damping_time {self.damping_time} s >= 0, friction_coefficient "
+                             f"{self.friction_coefficient} >= 0, regularisation_speed {self.regularisation_speed} m/s > 0")
+
+
+@dataclass(frozen=True)
 class SpatialScene:
     """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
     springs that hold coordinates, sliced roller–raceway contacts, and gravity g [m/s²] in the world frame."""
@@ -176,6 +224,7 @@ class SpatialScene:
     forces: tuple[BodyForce, ...] = ()
     springs: tuple[TranslationSpring, ...] = ()
     raceways: tuple[SlicedRaceway, ...] = ()
+    flanges: tuple[FlangeContact, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
@@ -189,16 +238,16 @@ class SpatialScene:
                 if not 0 <= item.body < count:
                     raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
                                      f"{count - 1}")
-        for contact in self.raceways:
+        for contact in (*self.raceways, *self.flanges):
             if not (0 <= contact.roller < count and -1 <= contact.ring < count and contact.ring != contact.roller):
-                raise ValueError(f"{owner}: raceway contact {contact.name!r} joins bodies {contact.roller} and "
+                raise ValueError(f"{owner}: contact {contact.name!r} joins bodies {contact.roller} and "
                                  f"{contact.ring}: two different bodies of 0 to {count - 1} (the ring may be -1, the "
                                  f"ground)")
 
     @property
     def has_forces(self) -> bool:
         """It has force elements beyond gravity (the engines' force kernel runs only then)."""
-        return bool(self.moments or self.forces or self.springs or self.raceways)
+        return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges)
 
     def packed(self) -> SpatialPacked:
         """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""
@@ -226,12 +275,24 @@ class SpatialScene:
             padded("positions"), padded("drops"), column(races, lambda c: c.width),
             column(races, lambda c: c.coefficient), column(races, lambda c: c.exponent),
             column(races, lambda c: c.damping_time), column(races, lambda c: c.friction_coefficient),
-            column(races, lambda c: c.regularisation_speed))
+            column(races, lambda c: c.regularisation_speed),
+            *_flange_columns(self.flanges, column))
+
+
+def _flange_columns(flanges, column) -> tuple:
+    """The flange contacts' columns of :class:`SpatialPacked` (the sphere's centre as z along the roller's axis)."""
+    return (column(flanges, lambda c: c.roller, int), column(flanges, lambda c: c.ring, int),
+            column(flanges, lambda c: c.end * (c.half_length - c.end_radius)), column(flanges, lambda c: c.end_radius),
+            column(flanges, lambda c: c.point, shape=(3,)), column(flanges, lambda c: c.normal, shape=(3,)),
+            column(flanges, lambda c: c.band, shape=(2,)), column(flanges, lambda c: c.stiffness),
+            column(flanges, lambda c: c.exponent), column(flanges, lambda c: c.damping_time),
+            column(flanges, lambda c: c.friction_coefficient), column(flanges, lambda c: c.regularisation_speed))
 
 
 class SpatialPacked(NamedTuple):
     """A spatial scene's force elements as arrays (see the element classes for the fields and units): world
-    forces, body moments, springs, and raceway contacts (slices padded to the longest contact's count)."""
+    forces, body moments, springs, raceway contacts (slices padded to the longest contact's count), flange contacts
+    (``flange_sphere``: the end sphere's centre z along the roller's axis [m])."""
 
     force_body: np.ndarray
     force: np.ndarray
@@ -258,12 +319,25 @@ class SpatialPacked(NamedTuple):
     race_damping_time: np.ndarray
     race_friction: np.ndarray
     race_regularisation_speed: np.ndarray
+    flange_roller: np.ndarray
+    flange_ring: np.ndarray
+    flange_sphere: np.ndarray
+    flange_end_radius: np.ndarray
+    flange_point: np.ndarray
+    flange_normal: np.ndarray
+    flange_band: np.ndarray
+    flange_stiffness: np.ndarray
+    flange_exponent: np.ndarray
+    flange_damping_time: np.ndarray
+    flange_friction: np.ndarray
+    flange_regularisation_speed: np.ndarray
 
 
 class SpatialSeries(NamedTuple):
     """A spatial run's output at its output instants: time (T,) [s]; per body (T, N, ·): position r [m],
     orientation p (unit quaternion, scalar first, its sign continuous in time), velocity ṙ [m/s] (world frame),
-    angular velocity ω [rad/s] (body frame); slice_loads (T, C, S) [N]: each raceway contact's slice loads Q_k; the
+    angular velocity ω [rad/s] (body frame); slice_loads (T, C, S) [N]: each raceway contact's slice loads Q_k;
+    flange_loads (T, F) [N]: each flange contact's load; the
     steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
     last good output instant)."""
 
@@ -273,6 +347,7 @@ class SpatialSeries(NamedTuple):
     velocity: np.ndarray
     angular_velocity: np.ndarray
     slice_loads: np.ndarray
+    flange_loads: np.ndarray
     steps: int
     message: str = ""
 

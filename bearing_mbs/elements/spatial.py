@@ -1,21 +1,46 @@
 """The force elements of a spatial scene, summed per body (compiled; both engines call it): world forces, body-fixed
-moments, springs that hold a coordinate, sliced raceway contacts (:mod:`bearing_mbs.contact.sliced_raceway`)."""
+moments, springs that hold a coordinate, sliced raceway contacts (:mod:`bearing_mbs.contact.sliced_raceway`) and
+flange contacts (:mod:`bearing_mbs.contact.flange`)."""
 
 from __future__ import annotations
 
-import numba
+from typing import NamedTuple
 
+import numba
+import numpy as np
+
+from bearing_mbs.contact.flange import add_flange
 from bearing_mbs.contact.sliced_raceway import add_sliced_raceway
 from bearing_mbs.core.rotations import rotation_from_vector
 
 
+class SpatialWork(NamedTuple):
+    """What a force evaluation fills in: the bodies' rotations (N, 3, 3), the forces on them [N] (world frame) and
+    the moments about their centres [N m] (body frame) (N, 3), the raceway contacts' slice loads (C, S) and the
+    flange contacts' loads (F,) [N]; and its scratch, the moments and angular velocities in the world frame (N, 3)."""
+
+    rotation: np.ndarray
+    force: np.ndarray
+    moment: np.ndarray
+    slice_loads: np.ndarray
+    flange_loads: np.ndarray
+    moment_world: np.ndarray
+    omega_world: np.ndarray
+
+
+def new_work(bodies: int, packed) -> SpatialWork:
+    """The :class:`SpatialWork` of ``bodies`` bodies and the contacts of ``packed``
+    (:class:`bearing_mbs.core.spatial.SpatialPacked`)."""
+    return SpatialWork(np.empty((bodies, 3, 3)), np.empty((bodies, 3)), np.empty((bodies, 3)),
+                       np.zeros(packed.race_positions.shape), np.zeros(packed.flange_roller.size),
+                       np.empty((bodies, 3)), np.empty((bodies, 3)))
+
+
 @numba.njit(cache=True)
-def spatial_forces(packed, position, rotation, velocity, omega_body, force, moment_body, moment_world, omega_world,
-                   slice_loads):
-    """The force [N] on each body's centre in the world frame into ``force``, the moment about it [N m] in the body's
-    frame into ``moment_body`` (bodies × 3), the raceway contacts' slice loads [N] into ``slice_loads``; from the
-    state: position, velocity [m, m/s] (world), rotation (bodies × 3 × 3), omega_body [rad/s] (body frame).
-    ``moment_world`` and ``omega_world`` (bodies × 3) are scratch."""
+def spatial_forces(packed, position, velocity, omega_body, work):
+    """The forces, moments and contact loads of ``work`` at the state: position, velocity [m, m/s] (world frame,
+    N × 3), ``work.rotation`` (filled in by the caller), omega_body [rad/s] (body frame)."""
+    rotation, force, moment_world, omega_world = work.rotation, work.force, work.moment_world, work.omega_world
     bodies = position.shape[0]
     for i in range(bodies):
         for j in range(3):
@@ -23,40 +48,40 @@ def spatial_forces(packed, position, rotation, velocity, omega_body, force, mome
             moment_world[i, j] = 0.0
             omega_world[i, j] = (rotation[i, j, 0] * omega_body[i, 0] + rotation[i, j, 1] * omega_body[i, 1]
                                  + rotation[i, j, 2] * omega_body[i, 2])
-            moment_body[i, j] = 0.0
+            work.moment[i, j] = 0.0
     for k in range(packed.force_body.size):
         for j in range(3):
             force[packed.force_body[k], j] += packed.force[k, j]
     for k in range(packed.moment_body.size):
         for j in range(3):
-            moment_body[packed.moment_body[k], j] += packed.moment[k, j]
+            work.moment[packed.moment_body[k], j] += packed.moment[k, j]
     for k in range(packed.spring_body.size):
         b, c = packed.spring_body[k], packed.spring_coordinate[k]
         force[b, c] -= (packed.spring_stiffness[k] * (position[b, c] - packed.spring_anchor[k])
                         + packed.spring_damping[k] * velocity[b, c])
     for contact in range(packed.race_roller.size):
         add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment_world,
-                           slice_loads)
+                           work.slice_loads)
+    for contact in range(packed.flange_roller.size):
+        add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment_world, work.flange_loads)
     for i in range(bodies):  # the contacts' world moments in the body frame: Rᵀ M
         for j in range(3):
-            moment_body[i, j] += (rotation[i, 0, j] * moment_world[i, 0] + rotation[i, 1, j] * moment_world[i, 1]
+            work.moment[i, j] += (rotation[i, 0, j] * moment_world[i, 0] + rotation[i, 1, j] * moment_world[i, 1]
                                   + rotation[i, 2, j] * moment_world[i, 2])
 
 
 @numba.njit(cache=True)
-def spatial_generalized_forces(packed, q, q_t, rotation, force, moment_body, moment_world, omega_world, slice_loads,
-                               out):
+def spatial_generalized_forces(packed, q, q_t, work, out):
     """Exudyn's generalized forces of a spatial scene's nodes (rotation-vector nodes: q = (r, φ), q̇ = (ṙ, ω) per
-    body, ω in the body frame): (F, M) per body, F in the world frame and M in the body frame, into ``out`` (6N,);
-    the rest as :func:`spatial_forces`."""
+    body, ω in the body frame): (F, M) per body, F in the world frame and M in the body frame, into ``out`` (6N,),
+    and ``work`` as :func:`spatial_forces` fills it."""
     bodies = q.size // 6
     state = q.reshape(bodies, 6)
     rates = q_t.reshape(bodies, 6)
     for b in range(bodies):
-        rotation_from_vector(state[b, 3], state[b, 4], state[b, 5], rotation[b])
-    spatial_forces(packed, state[:, :3], rotation, rates[:, :3], rates[:, 3:], force, moment_body, moment_world,
-                   omega_world, slice_loads)
+        rotation_from_vector(state[b, 3], state[b, 4], state[b, 5], work.rotation[b])
+    spatial_forces(packed, state[:, :3], rates[:, :3], rates[:, 3:], work)
     for b in range(bodies):
         for j in range(3):
-            out[6 * b + j] = force[b, j]
-            out[6 * b + 3 + j] = moment_body[b, j]
+            out[6 * b + j] = work.force[b, j]
+            out[6 * b + 3 + j] = work.moment[b, j]

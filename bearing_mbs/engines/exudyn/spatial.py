@@ -26,7 +26,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
-from bearing_mbs.elements.spatial import spatial_generalized_forces
+from bearing_mbs.elements.spatial import new_work, spatial_generalized_forces
 from bearing_mbs.engines.diagnosis import output_grid
 from bearing_mbs.spec import methods
 
@@ -116,14 +116,12 @@ class _Forces:
     """The force user function of the generic ODE2 object (and the slice loads of its last evaluation)."""
 
     def __init__(self, scene: SpatialScene):
-        count = len(scene.bodies)
         self.packed = scene.packed()
-        self.work = (np.empty((count, 3, 3)), *(np.empty((count, 3)) for _ in range(4)),
-                     np.zeros(self.packed.race_positions.shape))
-        self.out = np.empty(6 * count)
+        self.work = new_work(len(scene.bodies), self.packed)
+        self.out = np.empty(6 * len(scene.bodies))
 
     def evaluate(self, q, q_t) -> np.ndarray:
-        spatial_generalized_forces(self.packed, np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), *self.work,
+        spatial_generalized_forces(self.packed, np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), self.work,
                                    self.out)
         return self.out
 
@@ -131,8 +129,9 @@ class _Forces:
         return self.evaluate(q, q_t).tolist()
 
     @property
-    def slice_loads(self) -> np.ndarray:
-        return self.work[-1]
+    def loads(self) -> tuple[np.ndarray, np.ndarray]:
+        """The slice loads and the flange loads of the last evaluation [N]."""
+        return self.work.slice_loads.copy(), self.work.flange_loads.copy()
 
 
 class _Recorder:
@@ -156,8 +155,8 @@ class _Recorder:
         reference = previous if previous is not None else self.rows[-1][2]
         quaternion *= np.where(np.sum(quaternion * reference, axis=1) < 0, -1.0, 1.0)[:, None]
         data = self.mbs.systemData
-        self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())  # the slice loads here
-        self.rows.append((t, position, quaternion, velocity, omega, self.forces.slice_loads.copy()))
+        self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())  # the contact loads here
+        self.rows.append((t, position, quaternion, velocity, omega, *self.forces.loads))
 
     def __call__(self, mbs, t) -> bool:
         """After each accepted step: the guard on a finite state, output at the output instants. Returns False to
@@ -175,6 +174,6 @@ class _Recorder:
         return True
 
     def series(self) -> tuple[np.ndarray, ...]:
-        """The times (T,) recorded, the position, orientation, velocity and angular velocity (T, N, ·) and the slice
-        loads (T, C, S)."""
-        return tuple(np.array([row[k] for row in self.rows]) for k in range(6))
+        """The times (T,) recorded, the position, orientation, velocity and angular velocity (T, N, ·), the slice
+        loads (T, C, S) and the flange loads (T, F)."""
+        return tuple(np.array([row[k] for row in self.rows]) for k in range(7))

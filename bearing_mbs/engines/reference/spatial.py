@@ -25,7 +25,7 @@ import numpy as np
 
 from bearing_mbs.core.rotations import rotation_from_quaternion
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
-from bearing_mbs.elements.spatial import spatial_forces
+from bearing_mbs.elements.spatial import new_work, spatial_forces
 from bearing_mbs.engines.diagnosis import output_grid
 from bearing_mbs.engines.reference.integrators import equal_steps
 from bearing_mbs.engines.reference.tableaus import RK4
@@ -42,23 +42,6 @@ class SpatialBodies(NamedTuple):
     gravity: np.ndarray
 
 
-class SpatialWork(NamedTuple):
-    """Scratch of a force evaluation: the rotations (N, 3, 3), the forces (world) and moments (body frame) on the
-    bodies, the moments (world) and angular velocities (world) (N, 3), and the slice loads (C, S) [N]."""
-
-    rotation: np.ndarray
-    force: np.ndarray
-    moment: np.ndarray
-    moment_world: np.ndarray
-    omega_world: np.ndarray
-    slice_loads: np.ndarray
-
-
-def new_work(bodies: int, packed) -> SpatialWork:
-    return SpatialWork(np.empty((bodies, 3, 3)), *(np.empty((bodies, 3)) for _ in range(4)),
-                       np.zeros(packed.race_positions.shape))
-
-
 @numba.njit(cache=True)
 def spatial_rates(y, bodies, packed, work, rates):
     """The rates of the states ``y`` (N, 13) into ``rates`` (N, 13): the kinematics and the Newton–Euler equations
@@ -66,9 +49,7 @@ def spatial_rates(y, bodies, packed, work, rates):
     count = y.shape[0]
     for b in range(count):
         rotation_from_quaternion(y[b, 3], y[b, 4], y[b, 5], y[b, 6], work.rotation[b])
-    spatial_forces(packed, y[:, POSITION:ORIENTATION], work.rotation, y[:, VELOCITY:ANGULAR_VELOCITY],
-                   y[:, ANGULAR_VELOCITY:], work.force, work.moment, work.moment_world, work.omega_world,
-                   work.slice_loads)
+    spatial_forces(packed, y[:, POSITION:ORIENTATION], y[:, VELOCITY:ANGULAR_VELOCITY], y[:, ANGULAR_VELOCITY:], work)
     for b in range(count):
         w, x, yq, z = y[b, 3], y[b, 4], y[b, 5], y[b, 6]
         a, c2, c3 = y[b, 10], y[b, 11], y[b, 12]
@@ -122,6 +103,7 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     packed = scene.packed()
     work, rates = new_work(len(scene.bodies), packed), np.empty_like(y)
     states, loads = np.empty((times.size, *y.shape)), np.empty((times.size, *packed.race_positions.shape))
+    flange_loads = np.empty((times.size, packed.flange_roller.size))
     steps, message, reached = 0, "", times.size
     for k in range(times.size):
         if k > 0:
@@ -131,8 +113,8 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
                                                  times[k], step), k
             break
         spatial_rates(y, bodies, packed, work, rates)  # the slice loads of this instant
-        states[k], loads[k] = y, work.slice_loads
+        states[k], loads[k], flange_loads[k] = y, work.slice_loads, work.flange_loads
     states = states[:reached]
     return SpatialSeries(times[:reached], states[:, :, POSITION:ORIENTATION], states[:, :, ORIENTATION:VELOCITY],
                          states[:, :, VELOCITY:ANGULAR_VELOCITY], states[:, :, ANGULAR_VELOCITY:], loads[:reached],
-                         steps, message)
+                         flange_loads[:reached], steps, message)

@@ -1,0 +1,67 @@
+"""A contact point between a roller and a ring in three dimensions (compiled): the relative velocity of the two
+bodies' material points there, and the normal and friction forces applied at it, with their reactions. Shared by
+the sliced raceway contact (:mod:`.sliced_raceway`) and the flange contact (:mod:`.flange`).
+
+Arms and velocities are in the world frame: l = P − r_b from the roller's centre, p = P − r_g from the ring's
+(body index g, −1: the ground, which neither moves nor takes forces).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+
+from bearing_mbs.contact.friction import erf_sign
+
+
+@numba.njit(cache=True, inline="always")
+def cross_add(a0, a1, a2, b0, b1, b2, out, row, factor):
+    """out[row] += factor · (a × b)."""
+    out[row, 0] += factor * (a1 * b2 - a2 * b1)
+    out[row, 1] += factor * (a2 * b0 - a0 * b2)
+    out[row, 2] += factor * (a0 * b1 - a1 * b0)
+
+
+@numba.njit(cache=True, inline="always")
+def relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world):
+    """The velocity [m/s] of roller b's material point at arm l against ring g's there, and the ring's arm p [m]:
+    (u0, u1, u2, p0, p1, p2)."""
+    w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
+    u0 = velocity[b, 0] + w1 * l2 - w2 * l1
+    u1 = velocity[b, 1] + w2 * l0 - w0 * l2
+    u2 = velocity[b, 2] + w0 * l1 - w1 * l0
+    p0 = p1 = p2 = 0.0
+    if g >= 0:
+        p0, p1, p2 = position[b, 0] + l0 - position[g, 0], position[b, 1] + l1 - position[g, 1], \
+            position[b, 2] + l2 - position[g, 2]
+        v0, v1, v2 = omega_world[g, 0], omega_world[g, 1], omega_world[g, 2]
+        u0 -= velocity[g, 0] + v1 * p2 - v2 * p1
+        u1 -= velocity[g, 1] + v2 * p0 - v0 * p2
+        u2 -= velocity[g, 2] + v0 * p1 - v1 * p0
+    return u0, u1, u2, p0, p1, p2
+
+
+@numba.njit(cache=True, inline="always")
+def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1, u2, mu, regularisation, force,
+                  moment):
+    """Add to roller b, at arm l, the force ``normal`` · n [N] and the friction μ·load·erf(2|v_s|/v_reg) against the
+    sliding velocity v_s (u without its part along n), with the opposite force on ring g at arm p; moments about the
+    bodies' centres, all in the world frame."""
+    f0, f1, f2 = normal * n0, normal * n1, normal * n2
+    if mu > 0.0:
+        along = n0 * u0 + n1 * u1 + n2 * u2
+        t0, t1, t2 = u0 - along * n0, u1 - along * n1, u2 - along * n2
+        speed = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
+        if speed > 0.0:
+            friction = -mu * load * erf_sign(speed, regularisation) / speed
+            f0, f1, f2 = f0 + friction * t0, f1 + friction * t1, f2 + friction * t2
+    force[b, 0] += f0
+    force[b, 1] += f1
+    force[b, 2] += f2
+    cross_add(l0, l1, l2, f0, f1, f2, moment, b, 1.0)
+    if g >= 0:
+        force[g, 0] -= f0
+        force[g, 1] -= f1
+        force[g, 2] -= f2
+        cross_add(p0, p1, p2, f0, f1, f2, moment, g, -1.0)

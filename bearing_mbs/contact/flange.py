@@ -1,0 +1,59 @@
+r"""A roller's spherical end against a flange in three dimensions: a point contact (compiled).
+
+The roller's end sphere (radius R_e, centre c = r_b + z_s R_b e₃ on its axis) against the flange, the plane through o
+with unit normal a towards the roller (both carried by the ring): the approach is δ = R_e − (c − o)·a, at the sphere's
+point P = c − R_e a, which must lie within the flange's band of distance from the line through o along a (the ring's
+axis): inner <= |(P − o) − ((P − o)·a) a| <= outer. The load is Hertz's for a sphere on a plane (n = 3/2, K from
+:func:`bearing_mbs.contact.point_contact.hertz_stiffness`) with the slices' stiffness-proportional damping,
+
+.. math:: Q = K\,\delta^{\,n-1}(\delta + n\tau\dot\delta) \ge 0,
+
+along a on the roller, with friction against the sliding velocity at P (:mod:`.contact_point`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+
+from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
+
+
+@numba.njit(cache=True)
+def add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment, flange_loads):
+    """Add flange contact ``contact``'s forces [N] and moments [N m] (world frame, about the bodies' centres) to
+    ``force`` and ``moment`` and its load [N] into ``flange_loads[contact]``; the state as
+    :func:`bearing_mbs.contact.sliced_raceway.add_sliced_raceway` takes it."""
+    b, g = packed.flange_roller[contact], packed.flange_ring[contact]
+    o0, o1, o2 = packed.flange_point[contact, 0], packed.flange_point[contact, 1], packed.flange_point[contact, 2]
+    a0, a1, a2 = packed.flange_normal[contact, 0], packed.flange_normal[contact, 1], packed.flange_normal[contact, 2]
+    if g >= 0:
+        rg = rotation[g]
+        o0, o1, o2 = (position[g, 0] + rg[0, 0] * o0 + rg[0, 1] * o1 + rg[0, 2] * o2,
+                      position[g, 1] + rg[1, 0] * o0 + rg[1, 1] * o1 + rg[1, 2] * o2,
+                      position[g, 2] + rg[2, 0] * o0 + rg[2, 1] * o1 + rg[2, 2] * o2)
+        a0, a1, a2 = (rg[0, 0] * a0 + rg[0, 1] * a1 + rg[0, 2] * a2, rg[1, 0] * a0 + rg[1, 1] * a1 + rg[1, 2] * a2,
+                      rg[2, 0] * a0 + rg[2, 1] * a1 + rg[2, 2] * a2)
+    flange_loads[contact] = 0.0
+    z, radius = packed.flange_sphere[contact], packed.flange_end_radius[contact]
+    # the arm of the sphere's point P nearest the flange, from the roller's centre
+    l0 = z * rotation[b, 0, 2] - radius * a0
+    l1 = z * rotation[b, 1, 2] - radius * a1
+    l2 = z * rotation[b, 2, 2] - radius * a2
+    r0, r1, r2 = position[b, 0] + l0 - o0, position[b, 1] + l1 - o1, position[b, 2] + l2 - o2  # P − o
+    approach = -(r0 * a0 + r1 * a1 + r2 * a2)
+    if approach <= 0.0:
+        return
+    d0, d1, d2 = r0 + approach * a0, r1 + approach * a1, r2 + approach * a2  # radial part of P − o
+    distance = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    if not packed.flange_band[contact, 0] <= distance <= packed.flange_band[contact, 1]:
+        return
+    u0, u1, u2, p0, p1, p2 = relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world)
+    rate = -(a0 * u0 + a1 * u1 + a2 * u2)
+    exponent = packed.flange_exponent[contact]
+    load = max(packed.flange_stiffness[contact] * approach ** (exponent - 1.0)
+               * (approach + exponent * packed.flange_damping_time[contact] * rate), 0.0)
+    flange_loads[contact] = load
+    apply_contact(b, g, l0, l1, l2, p0, p1, p2, a0, a1, a2, load, load, u0, u1, u2, packed.flange_friction[contact],
+                  packed.flange_regularisation_speed[contact], force, moment)
