@@ -38,7 +38,7 @@ def pressed(load: float, band=(0.0, 1.0), velocity=(0.0, 0.0, 0.0), friction: fl
                            point=(0, 0, 0), normal=(0, 0, 1), band=band, stiffness=STIFFNESS,
                            damping_time=damping_time, friction_coefficient=friction, regularisation_speed=1e-4)
     return SpatialScene("on a flange", (roller,), forces=(BodyForce(0, (0.0, 0.0, -load)),),
-                        springs=(TranslationSpring(0, 0, 1e8, 1e3),), flanges=(flange,))
+                        springs=(TranslationSpring(0, (1, 0, 0), 1e8, 1e3),), flanges=(flange,))
 
 
 @pytest.mark.parametrize("engine", ENGINES)

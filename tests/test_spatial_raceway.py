@@ -66,7 +66,7 @@ def one_roller(model: SlicedRollerSet, radial: float, tilt: float, centrifugal: 
                           exponent=rollers.outer_exponent, **common)
     roller = SpatialBody("roller", m, (transverse, transverse, axial), position=(pitch_radius, 0, 0))
     return SpatialScene("one roller", (roller,), forces=(BodyForce(0, (centrifugal, 0, 0)),),
-                        springs=(TranslationSpring(0, 1, 1e8, 1e3), TranslationSpring(0, 2, 1e8, 1e3)),
+                        springs=(TranslationSpring(0, (0, 1, 0), 1e8, 1e3), TranslationSpring(0, (0, 0, 1), 1e8, 1e3)),
                         raceways=(inner, outer))
 
 
@@ -133,9 +133,9 @@ def test_bad_raceway_contacts_are_refused_on_construction(change):
 def test_bad_spatial_force_elements_are_refused():
     body = SpatialBody("b", 1.0, (1.0, 1.0, 1.0))
     with pytest.raises(ValueError):
-        TranslationSpring(0, 3, 1e6)
+        TranslationSpring(0, (0, 0, 2), 1e6)
     with pytest.raises(ValueError):
-        TranslationSpring(0, 0, 0.0)
+        TranslationSpring(0, (1, 0, 0), 0.0)
     with pytest.raises(ValueError):
         SpatialScene("s", (body,), forces=(BodyForce(2, (0, 0, 1)),))
     contact = SlicedRaceway("c", 0, 0, (0, 0, 0), (0, 0, 1), 0.1, "inner", 0.01, (0.0,), (0.0,), 0.01, 1e10, 10 / 9)
@@ -230,7 +230,7 @@ def test_a_spinning_roller_set_on_a_raceway_slides_then_rolls(engine):
     roller = SpatialBody("roller", m, (transverse, transverse, axial), position=(radius + r - approach, 0, 0),
                          angular_velocity=(0, 0, spin))
     scene = SpatialScene("set down spinning", (roller,), forces=(BodyForce(0, (-normal, 0, 0)),),
-                         springs=(TranslationSpring(0, 2, 1e8, 1e3),), raceways=(contact,))
+                         springs=(TranslationSpring(0, (0, 0, 1), 1e8, 1e3),), raceways=(contact,))
     acceleration, deceleration = mu * normal / m, mu * normal * r / axial
     rolls_at = spin * r / (acceleration + deceleration * r)
     series = ENGINES[engine](scene, 2e-6, 2 * rolls_at, rolls_at / 10)

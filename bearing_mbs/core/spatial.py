@@ -88,18 +88,23 @@ class BodyForce:
 
 @dataclass(frozen=True)
 class TranslationSpring:
-    """A linear spring and damper that holds coordinate ``coordinate`` (0, 1, 2: x, y, z) of body ``body``'s centre
-    at its initial value: F = −k (r_c − r_c(0)) − c ṙ_c, stiffness k [N/m] > 0, damping c [N s/m] >= 0."""
+    """A linear spring and damper that holds body ``body``'s centre at its initial position along the unit vector
+    ``direction`` (world frame): F = −(k (r − r(0))·e + c ṙ·e) e, stiffness k [N/m] > 0, damping c [N s/m] >= 0
+    (as a flange or a cage holds a roller until they are modelled)."""
 
     body: int
-    coordinate: int
+    direction: tuple[float, float, float]
     stiffness: float
     damping: float = 0.0
 
     def __post_init__(self):
-        if self.coordinate not in (0, 1, 2) or not (self.stiffness > 0 and self.damping >= 0):
-            raise ValueError(f"spring on body {self.body}: coordinate {self.coordinate!r} must be 0, 1 or 2, stiffness "
-                             f"{self.stiffness} N/m > 0 and damping {self.damping} N s/m >= 0")
+        owner = f"spring on body {self.body}"
+        object.__setattr__(self, "direction", _vector(owner, "direction", self.direction, 3))
+        if abs(math.sqrt(sum(x * x for x in self.direction)) - 1.0) > UNIT_TOLERANCE:
+            raise ValueError(f"{owner}: direction {self.direction} must be a unit vector")
+        if not (self.stiffness > 0 and self.damping >= 0):
+            raise ValueError(f"{owner}: stiffness {self.stiffness} N/m must be > 0 and damping {self.damping} N s/m "
+                             f">= 0")
 
 
 #: The sides of a raceway: ``inner`` is a ring's outer surface (the roller outside it), ``outer`` a bore (the roller
@@ -265,8 +270,8 @@ class SpatialScene:
         return SpatialPacked(
             column(self.forces, lambda f: f.body, int), column(self.forces, lambda f: f.force, shape=(3,)),
             column(self.moments, lambda m: m.body, int), column(self.moments, lambda m: m.moment, shape=(3,)),
-            column(self.springs, lambda s: s.body, int), column(self.springs, lambda s: s.coordinate, int),
-            column(self.springs, lambda s: bodies[s.body].position[s.coordinate]),
+            column(self.springs, lambda s: s.body, int), column(self.springs, lambda s: s.direction, shape=(3,)),
+            column(self.springs, lambda s: bodies[s.body].position, shape=(3,)),
             column(self.springs, lambda s: s.stiffness), column(self.springs, lambda s: s.damping),
             column(races, lambda c: c.roller, int), column(races, lambda c: c.ring, int),
             column(races, lambda c: c.centre, shape=(3,)), column(races, lambda c: c.axis, shape=(3,)),
@@ -299,7 +304,7 @@ class SpatialPacked(NamedTuple):
     moment_body: np.ndarray
     moment: np.ndarray
     spring_body: np.ndarray
-    spring_coordinate: np.ndarray
+    spring_direction: np.ndarray
     spring_anchor: np.ndarray
     spring_stiffness: np.ndarray
     spring_damping: np.ndarray

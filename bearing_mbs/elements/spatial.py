@@ -56,9 +56,14 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         for j in range(3):
             work.moment[packed.moment_body[k], j] += packed.moment[k, j]
     for k in range(packed.spring_body.size):
-        b, c = packed.spring_body[k], packed.spring_coordinate[k]
-        force[b, c] -= (packed.spring_stiffness[k] * (position[b, c] - packed.spring_anchor[k])
-                        + packed.spring_damping[k] * velocity[b, c])
+        b, e = packed.spring_body[k], packed.spring_direction[k]
+        stretch = speed = 0.0
+        for j in range(3):
+            stretch += (position[b, j] - packed.spring_anchor[k, j]) * e[j]
+            speed += velocity[b, j] * e[j]
+        pull = packed.spring_stiffness[k] * stretch + packed.spring_damping[k] * speed
+        for j in range(3):
+            force[b, j] -= pull * e[j]
     for contact in range(packed.race_roller.size):
         add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment_world,
                            work.slice_loads)
