@@ -47,8 +47,9 @@ def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1
                   moment):
     """Add to roller b, at arm l, the force ``normal`` · n [N] and the friction μ·load·erf(2|v_s|/v_reg) against the
     sliding velocity v_s (u without its part along n), with the opposite force on ring g at arm p; moments about the
-    bodies' centres, all in the world frame."""
+    bodies' centres, all in the world frame. Returns the power the friction dissipates, −F_T·v_s >= 0 [W]."""
     f0, f1, f2 = normal * n0, normal * n1, normal * n2
+    dissipated = 0.0
     if mu > 0.0:
         along = n0 * u0 + n1 * u1 + n2 * u2
         t0, t1, t2 = u0 - along * n0, u1 - along * n1, u2 - along * n2
@@ -56,6 +57,7 @@ def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1
         if speed > 0.0:
             friction = -mu * load * erf_sign(speed, regularisation) / speed
             f0, f1, f2 = f0 + friction * t0, f1 + friction * t1, f2 + friction * t2
+            dissipated = -friction * speed * speed
     force[b, 0] += f0
     force[b, 1] += f1
     force[b, 2] += f2
@@ -65,3 +67,4 @@ def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1
         force[g, 1] -= f1
         force[g, 2] -= f2
         cross_add(p0, p1, p2, f0, f1, f2, moment, g, -1.0)
+    return dissipated

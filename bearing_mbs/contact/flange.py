@@ -8,7 +8,7 @@ axis): inner <= |(P − o) − ((P − o)·a) a| <= outer. The load is Hertz's f
 
 .. math:: Q = K\,\delta^{\,n-1}(\delta + n\tau\dot\delta) \ge 0,
 
-along a on the roller, with friction against the sliding velocity at P (:mod:`.contact_point`).
+(its elastic part K δ^n storing K δ^(n+1)/(n+1), the rest dissipating) along a on the roller, with friction against the sliding velocity at P (:mod:`.contact_point`).
 """
 
 from __future__ import annotations
@@ -18,13 +18,15 @@ import math
 import numba
 
 from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
+from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 
 
 @numba.njit(cache=True)
 def add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment, flange_loads):
     """Add flange contact ``contact``'s forces [N] and moments [N m] (world frame, about the bodies' centres) to
     ``force`` and ``moment`` and its load [N] into ``flange_loads[contact]``; the state as
-    :func:`bearing_mbs.contact.sliced_raceway.add_sliced_raceway` takes it."""
+    :func:`bearing_mbs.contact.sliced_raceway.add_sliced_raceway` takes it; returns the power it dissipates [W] and
+    the energy it stores [J], as that function does."""
     b, g = packed.flange_roller[contact], packed.flange_ring[contact]
     o0, o1, o2 = packed.flange_point[contact, 0], packed.flange_point[contact, 1], packed.flange_point[contact, 2]
     a0, a1, a2 = packed.flange_normal[contact, 0], packed.flange_normal[contact, 1], packed.flange_normal[contact, 2]
@@ -44,16 +46,18 @@ def add_flange(packed, contact, position, rotation, velocity, omega_world, force
     r0, r1, r2 = position[b, 0] + l0 - o0, position[b, 1] + l1 - o1, position[b, 2] + l2 - o2  # P − o
     approach = -(r0 * a0 + r1 * a1 + r2 * a2)
     if approach <= 0.0:
-        return
+        return 0.0, 0.0
     d0, d1, d2 = r0 + approach * a0, r1 + approach * a1, r2 + approach * a2  # radial part of P − o
     distance = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
     if not packed.flange_band[contact, 0] <= distance <= packed.flange_band[contact, 1]:
-        return
+        return 0.0, 0.0
     u0, u1, u2, p0, p1, p2 = relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world)
     rate = -(a0 * u0 + a1 * u1 + a2 * u2)
-    exponent = packed.flange_exponent[contact]
-    load = max(packed.flange_stiffness[contact] * approach ** (exponent - 1.0)
-               * (approach + exponent * packed.flange_damping_time[contact] * rate), 0.0)
+    stiffness, exponent = packed.flange_stiffness[contact], packed.flange_exponent[contact]
+    elastic = power_law_force(approach, stiffness, exponent)
+    load = max(elastic * (1.0 + exponent * packed.flange_damping_time[contact] * rate / approach), 0.0)
     flange_loads[contact] = load
-    apply_contact(b, g, l0, l1, l2, p0, p1, p2, a0, a1, a2, load, load, u0, u1, u2, packed.flange_friction[contact],
-                  packed.flange_regularisation_speed[contact], force, moment)
+    friction = apply_contact(b, g, l0, l1, l2, p0, p1, p2, a0, a1, a2, load, load, u0, u1, u2,
+                             packed.flange_friction[contact], packed.flange_regularisation_speed[contact], force,
+                             moment)
+    return (load - elastic) * rate + friction, power_law_energy(approach, stiffness, exponent)

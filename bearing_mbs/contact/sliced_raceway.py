@@ -16,6 +16,8 @@ carries
 .. math::
     Q_k = C_f\,w\,\Delta_k^{\,n-1}\,(\Delta_k + n\tau\dot\Delta_k) \ge 0,
 
+its elastic part Q_e = C_f w Δ_k^n storing C_f w Δ_k^(n+1)/(n+1) and the rest dissipating (Q_k − Q_e) Δ̇_k >= 0,
+
 the slice law of document 003 (eqs. 14–16) with stiffness-proportional damping (τ [s]: the slice's tangent stiffness
 n C_f w Δ^(n−1) times τ), Δ̇_k = −s n_k·(ċ_k − v_ring(c_k)) from the roller's and the ring's rigid motions. The
 force s Q_k n_k acts on the roller at its surface point P_k = c_k − s r n_k, and its reaction on the ring there; its
@@ -31,13 +33,15 @@ import math
 import numba
 
 from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
+from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 
 
 @numba.njit(cache=True)
 def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment, slice_loads):
     """Add raceway contact ``contact``'s forces [N] and moments about the bodies' centres [N m], both in the world
     frame, to ``force`` and ``moment`` (bodies × 3), and its slice loads Q_k [N] into ``slice_loads[contact]``.
-    position, velocity (bodies × 3) [m, m/s], rotation (bodies × 3 × 3), omega_world (bodies × 3) [rad/s]."""
+    position, velocity (bodies × 3) [m, m/s], rotation (bodies × 3 × 3), omega_world (bodies × 3) [rad/s]. Returns
+    the power its damping and friction dissipate [W] and the energy its slices store [J]."""
     b, g = packed.race_roller[contact], packed.race_ring[contact]
     s, radius, roller_radius = packed.race_side[contact], packed.race_radius[contact], packed.race_roller_radius[contact]
     coefficient = packed.race_coefficient[contact] * packed.race_width[contact]
@@ -54,6 +58,7 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         a0, a1, a2 = (rg[0, 0] * a0 + rg[0, 1] * a1 + rg[0, 2] * a2, rg[1, 0] * a0 + rg[1, 1] * a1 + rg[1, 2] * a2,
                       rg[2, 0] * a0 + rg[2, 1] * a1 + rg[2, 2] * a2)
     e0, e1, e2 = rotation[b, 0, 2], rotation[b, 1, 2], rotation[b, 2, 2]  # the roller's axis
+    dissipated = stored = 0.0
     for k in range(packed.race_slices[contact]):
         z = packed.race_positions[contact, k]
         c0, c1, c2 = position[b, 0] + z * e0, position[b, 1] + z * e1, position[b, 2] + z * e2
@@ -70,7 +75,10 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         l0, l1, l2 = z * e0 - s * roller_radius * n0, z * e1 - s * roller_radius * n1, z * e2 - s * roller_radius * n2
         u0, u1, u2, p0, p1, p2 = relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world)
         rate = -s * (n0 * u0 + n1 * u1 + n2 * u2)
-        load = max(coefficient * interference ** (exponent - 1.0) * (interference + exponent * tau * rate), 0.0)
+        elastic = power_law_force(interference, coefficient, exponent)
+        load = max(elastic * (1.0 + exponent * tau * rate / interference), 0.0)
         slice_loads[contact, k] = load
-        apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load, u0, u1, u2, mu, regularisation, force,
-                      moment)
+        stored += power_law_energy(interference, coefficient, exponent)
+        dissipated += (load - elastic) * rate + apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load,
+                                                              u0, u1, u2, mu, regularisation, force, moment)
+    return dissipated, stored

@@ -342,7 +342,8 @@ class SpatialSeries(NamedTuple):
     """A spatial run's output at its output instants: time (T,) [s]; per body (T, N, ·): position r [m],
     orientation p (unit quaternion, scalar first, its sign continuous in time), velocity ṙ [m/s] (world frame),
     angular velocity ω [rad/s] (body frame); slice_loads (T, C, S) [N]: each raceway contact's slice loads Q_k;
-    flange_loads (T, F) [N]: each flange contact's load; the
+    flange_loads (T, F) [N]: each flange contact's load; work (T, 2) [J]: the work the loads supplied and the work
+    the dampers and friction dissipated since t = 0; stored (T,) [J]: the energy the springs and contacts store; the
     steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
     last good output instant)."""
 
@@ -353,12 +354,41 @@ class SpatialSeries(NamedTuple):
     angular_velocity: np.ndarray
     slice_loads: np.ndarray
     flange_loads: np.ndarray
+    work: np.ndarray
+    stored: np.ndarray
     steps: int
     message: str = ""
 
     @property
     def success(self) -> bool:
         return not self.message
+
+
+class EnergyAudit(NamedTuple):
+    """A spatial run's energy at its output instants (T,) [J]: kinetic ½ m ṙ² + ½ ω·Iω, gravity's −m g·r, the
+    springs' and contacts' stored energy, the work supplied and dissipated since t = 0; ``error`` = (kinetic +
+    gravity + stored + dissipated − supplied) − its value at t = 0, which a closed balance keeps at zero."""
+
+    kinetic: np.ndarray
+    gravity: np.ndarray
+    stored: np.ndarray
+    supplied: np.ndarray
+    dissipated: np.ndarray
+
+    @property
+    def error(self) -> np.ndarray:
+        total = self.kinetic + self.gravity + self.stored + self.dissipated - self.supplied
+        return total - total[0]
+
+
+def energy_audit(scene: SpatialScene, series: SpatialSeries) -> EnergyAudit:
+    """The energy balance of ``series``, a run of ``scene``."""
+    mass = np.array([b.mass for b in scene.bodies])
+    inertia = np.array([b.inertia for b in scene.bodies])
+    kinetic = 0.5 * (np.einsum("b,tbj->t", mass, series.velocity**2)
+                     + np.einsum("bj,tbj->t", inertia, series.angular_velocity**2))
+    gravity = -np.einsum("b,j,tbj->t", mass, np.array(scene.gravity), series.position)
+    return EnergyAudit(kinetic, gravity, series.stored, series.work[:, 0], series.work[:, 1])
 
 
 def nonfinite_message(scene: SpatialScene, finite: np.ndarray, last_angular_velocity: np.ndarray, t: float,

@@ -39,7 +39,9 @@ def new_work(bodies: int, packed) -> SpatialWork:
 @numba.njit(cache=True)
 def spatial_forces(packed, position, velocity, omega_body, work):
     """The forces, moments and contact loads of ``work`` at the state: position, velocity [m, m/s] (world frame,
-    N × 3), ``work.rotation`` (filled in by the caller), omega_body [rad/s] (body frame)."""
+    N × 3), ``work.rotation`` (filled in by the caller), omega_body [rad/s] (body frame). Returns the power the loads
+    supply and the power the dampers and friction dissipate [W], and the energy the springs and contacts store [J]
+    (gravity is the engines')."""
     rotation, force, moment_world, omega_world = work.rotation, work.force, work.moment_world, work.omega_world
     bodies = position.shape[0]
     for i in range(bodies):
@@ -49,12 +51,15 @@ def spatial_forces(packed, position, velocity, omega_body, work):
             omega_world[i, j] = (rotation[i, j, 0] * omega_body[i, 0] + rotation[i, j, 1] * omega_body[i, 1]
                                  + rotation[i, j, 2] * omega_body[i, 2])
             work.moment[i, j] = 0.0
+    supplied = dissipated = stored = 0.0
     for k in range(packed.force_body.size):
         for j in range(3):
             force[packed.force_body[k], j] += packed.force[k, j]
+            supplied += packed.force[k, j] * velocity[packed.force_body[k], j]
     for k in range(packed.moment_body.size):
         for j in range(3):
             work.moment[packed.moment_body[k], j] += packed.moment[k, j]
+            supplied += packed.moment[k, j] * omega_body[packed.moment_body[k], j]
     for k in range(packed.spring_body.size):
         b, e = packed.spring_body[k], packed.spring_direction[k]
         stretch = speed = 0.0
@@ -64,29 +69,36 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         pull = packed.spring_stiffness[k] * stretch + packed.spring_damping[k] * speed
         for j in range(3):
             force[b, j] -= pull * e[j]
+        stored += 0.5 * packed.spring_stiffness[k] * stretch * stretch
+        dissipated += packed.spring_damping[k] * speed * speed
     for contact in range(packed.race_roller.size):
-        add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment_world,
-                           work.slice_loads)
+        lost, kept = add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force,
+                                        moment_world, work.slice_loads)
+        dissipated, stored = dissipated + lost, stored + kept
     for contact in range(packed.flange_roller.size):
-        add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment_world, work.flange_loads)
+        lost, kept = add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment_world,
+                                work.flange_loads)
+        dissipated, stored = dissipated + lost, stored + kept
     for i in range(bodies):  # the contacts' world moments in the body frame: Rᵀ M
         for j in range(3):
             work.moment[i, j] += (rotation[i, 0, j] * moment_world[i, 0] + rotation[i, 1, j] * moment_world[i, 1]
                                   + rotation[i, 2, j] * moment_world[i, 2])
+    return supplied, dissipated, stored
 
 
 @numba.njit(cache=True)
 def spatial_generalized_forces(packed, q, q_t, work, out):
     """Exudyn's generalized forces of a spatial scene's nodes (rotation-vector nodes: q = (r, φ), q̇ = (ṙ, ω) per
     body, ω in the body frame): (F, M) per body, F in the world frame and M in the body frame, into ``out`` (6N,),
-    and ``work`` as :func:`spatial_forces` fills it."""
+    and ``work`` as :func:`spatial_forces` fills it; returns what that returns."""
     bodies = q.size // 6
     state = q.reshape(bodies, 6)
     rates = q_t.reshape(bodies, 6)
     for b in range(bodies):
         rotation_from_vector(state[b, 3], state[b, 4], state[b, 5], work.rotation[b])
-    spatial_forces(packed, state[:, :3], rates[:, :3], rates[:, 3:], work)
+    powers = spatial_forces(packed, state[:, :3], rates[:, :3], rates[:, 3:], work)
     for b in range(bodies):
         for j in range(3):
             out[6 * b + j] = work.force[b, j]
             out[6 * b + 3 + j] = work.moment[b, j]
+    return powers

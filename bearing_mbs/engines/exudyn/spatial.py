@@ -119,10 +119,12 @@ class _Forces:
         self.packed = scene.packed()
         self.work = new_work(len(scene.bodies), self.packed)
         self.out = np.empty(6 * len(scene.bodies))
+        self.powers = (0.0, 0.0, 0.0)  # supplied, dissipated [W], stored [J] of the last evaluation
 
     def evaluate(self, q, q_t) -> np.ndarray:
-        spatial_generalized_forces(self.packed, np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), self.work,
-                                   self.out)
+        """The generalized forces at (q, q̇); the powers and stored energy into ``self.powers``."""
+        self.powers = spatial_generalized_forces(self.packed, np.asarray(q, dtype=float),
+                                                 np.asarray(q_t, dtype=float), self.work, self.out)
         return self.out
 
     def __call__(self, mbs, t, item_number, q, q_t):
@@ -135,7 +137,8 @@ class _Forces:
 
 
 class _Recorder:
-    """PostStepUserFunction: a finite state after every step, the bodies' states at the output instants."""
+    """PostStepUserFunction: a finite state after every step, the work (trapezoid rule over the accepted steps, as
+    the planar engine integrates it), the bodies' states at the output instants."""
 
     def __init__(self, mbs, exu, nodes: list, times: np.ndarray, scene: SpatialScene, step: float, forces: _Forces):
         self.mbs, self.nodes, self.times, self.scene, self.step, self.forces = mbs, nodes, times, scene, step, forces
@@ -144,6 +147,8 @@ class _Recorder:
         self.kinds = (kinds.Position, kinds.Velocity, kinds.RotationMatrix, kinds.AngularVelocityLocal)
         self.rows: list[tuple] = []
         self.margin = 1e-6 * (times[1] - times[0]) if times.size > 1 else 0.0
+        self.work, self.power = np.zeros(2), None  # supplied, dissipated [J]; the last step's powers [W]
+        self.last_time = 0.0
 
     def record(self, t: float = 0.0, previous: np.ndarray | None = None):
         """Store the current state at t [s]; the quaternions' signs follow ``previous`` (N, 4), else the last
@@ -156,7 +161,10 @@ class _Recorder:
         quaternion *= np.where(np.sum(quaternion * reference, axis=1) < 0, -1.0, 1.0)[:, None]
         data = self.mbs.systemData
         self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())  # the contact loads here
-        self.rows.append((t, position, quaternion, velocity, omega, *self.forces.loads))
+        if self.power is None:
+            self.power = np.array(self.forces.powers[:2])
+        self.rows.append((t, position, quaternion, velocity, omega, *self.forces.loads, self.work.copy(),
+                          self.forces.powers[2]))
 
     def __call__(self, mbs, t) -> bool:
         """After each accepted step: the guard on a finite state, output at the output instants. Returns False to
@@ -169,11 +177,15 @@ class _Recorder:
         if not finite.all():
             self.message = nonfinite_message(self.scene, finite, self.rows[-1][4], t, self.step)
             return False
+        self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())
+        power = np.array(self.forces.powers[:2])
+        self.work += 0.5 * (t - self.last_time) * (self.power + power)
+        self.power, self.last_time = power, t
         if len(self.rows) < self.times.size and t >= self.times[len(self.rows)] - self.margin:
             self.record(t)
         return True
 
     def series(self) -> tuple[np.ndarray, ...]:
         """The times (T,) recorded, the position, orientation, velocity and angular velocity (T, N, ·), the slice
-        loads (T, C, S) and the flange loads (T, F)."""
-        return tuple(np.array([row[k] for row in self.rows]) for k in range(7))
+        loads (T, C, S), the flange loads (T, F), the work (T, 2) and the stored energy (T,)."""
+        return tuple(np.array([row[k] for row in self.rows]) for k in range(9))

@@ -45,11 +45,13 @@ class SpatialBodies(NamedTuple):
 @numba.njit(cache=True)
 def spatial_rates(y, bodies, packed, work, rates):
     """The rates of the states ``y`` (N, 13) into ``rates`` (N, 13): the kinematics and the Newton–Euler equations
-    under the scene's force elements (:func:`bearing_mbs.elements.spatial.spatial_forces`) and gravity."""
+    under the scene's force elements (:func:`bearing_mbs.elements.spatial.spatial_forces`) and gravity. Returns the
+    force elements' (supplied, dissipated) power [W] and stored energy [J]."""
     count = y.shape[0]
     for b in range(count):
         rotation_from_quaternion(y[b, 3], y[b, 4], y[b, 5], y[b, 6], work.rotation[b])
-    spatial_forces(packed, y[:, POSITION:ORIENTATION], y[:, VELOCITY:ANGULAR_VELOCITY], y[:, ANGULAR_VELOCITY:], work)
+    powers = spatial_forces(packed, y[:, POSITION:ORIENTATION], y[:, VELOCITY:ANGULAR_VELOCITY],
+                            y[:, ANGULAR_VELOCITY:], work)
     for b in range(count):
         w, x, yq, z = y[b, 3], y[b, 4], y[b, 5], y[b, 6]
         a, c2, c3 = y[b, 10], y[b, 11], y[b, 12]
@@ -64,16 +66,18 @@ def spatial_rates(y, bodies, packed, work, rates):
         rates[b, 10] = (work.moment[b, 0] + (i2 - i3) * c2 * c3) / i1  # Euler's equations
         rates[b, 11] = (work.moment[b, 1] + (i3 - i1) * c3 * a) / i2
         rates[b, 12] = (work.moment[b, 2] + (i1 - i2) * a * c2) / i3
+    return powers
 
 
 @numba.njit(cache=True)
-def spatial_runge_kutta(y, bodies, packed, work, span, step, a, b):
+def spatial_runge_kutta(y, energy, bodies, packed, work, span, step, a, b):
     """Advance ``y`` over ``span`` [s] in equal steps of at most ``step`` [s] of the explicit Runge–Kutta method
-    (a, b) (:mod:`~bearing_mbs.engines.reference.tableaus`), each followed by the quaternions' normalisation; returns
-    the steps taken."""
+    (a, b) (:mod:`~bearing_mbs.engines.reference.tableaus`), each followed by the quaternions' normalisation, and the
+    work (supplied, dissipated) [J] in ``energy`` with the same stages; returns the steps taken."""
     steps = equal_steps(span, step)
     h = span / steps
     stages = np.empty((b.size, *y.shape))
+    powers = np.empty((b.size, 2))
     stage = np.empty_like(y)
     for _ in range(steps):
         for i in range(b.size):
@@ -81,9 +85,11 @@ def spatial_runge_kutta(y, bodies, packed, work, span, step, a, b):
             for j in range(i):
                 if a[i, j] != 0.0:
                     stage += h * a[i, j] * stages[j]
-            spatial_rates(stage, bodies, packed, work, stages[i])
+            powers[i, 0], powers[i, 1], _ = spatial_rates(stage, bodies, packed, work, stages[i])
         for i in range(b.size):
             y += h * b[i] * stages[i]
+            energy[0] += h * b[i] * powers[i, 0]
+            energy[1] += h * b[i] * powers[i, 1]
         for body in range(y.shape[0]):
             norm = math.sqrt(y[body, 3] ** 2 + y[body, 4] ** 2 + y[body, 5] ** 2 + y[body, 6] ** 2)
             for k in range(ORIENTATION, VELOCITY):
@@ -101,20 +107,21 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     bodies = SpatialBodies(np.array([b.mass for b in scene.bodies]), np.array([b.inertia for b in scene.bodies]),
                            np.array(scene.gravity))
     packed = scene.packed()
-    work, rates = new_work(len(scene.bodies), packed), np.empty_like(y)
+    work, rates, energy = new_work(len(scene.bodies), packed), np.empty_like(y), np.zeros(2)
     states, loads = np.empty((times.size, *y.shape)), np.empty((times.size, *packed.race_positions.shape))
     flange_loads = np.empty((times.size, packed.flange_roller.size))
+    works, stored = np.empty((times.size, 2)), np.empty(times.size)
     steps, message, reached = 0, "", times.size
     for k in range(times.size):
         if k > 0:
-            steps += spatial_runge_kutta(y, bodies, packed, work, times[k] - times[k - 1], step, RK4.a, RK4.b)
+            steps += spatial_runge_kutta(y, energy, bodies, packed, work, times[k] - times[k - 1], step, RK4.a, RK4.b)
         if not np.isfinite(y).all():
             message, reached = nonfinite_message(scene, np.isfinite(y).all(axis=1), states[k - 1, :, ANGULAR_VELOCITY:],
                                                  times[k], step), k
             break
-        spatial_rates(y, bodies, packed, work, rates)  # the slice loads of this instant
-        states[k], loads[k], flange_loads[k] = y, work.slice_loads, work.flange_loads
+        *_, stored[k] = spatial_rates(y, bodies, packed, work, rates)  # the contact loads of this instant
+        states[k], loads[k], flange_loads[k], works[k] = y, work.slice_loads, work.flange_loads, energy
     states = states[:reached]
     return SpatialSeries(times[:reached], states[:, :, POSITION:ORIENTATION], states[:, :, ORIENTATION:VELOCITY],
                          states[:, :, VELOCITY:ANGULAR_VELOCITY], states[:, :, ANGULAR_VELOCITY:], loads[:reached],
-                         flange_loads[:reached], steps, message)
+                         flange_loads[:reached], works[:reached], stored[:reached], steps, message)
