@@ -1,5 +1,5 @@
-r"""A roller against a cylindrical raceway in three dimensions: document 003's sliced line contact with exact
-kinematics (compiled).
+r"""A roller against a cylindrical raceway or a plane in three dimensions: document 003's sliced line contact with
+exact kinematics (compiled).
 
 Slice k of the roller (centre r_b, rotation R_b, axis R_b e₃) has its centre at c_k = r_b + z_k R_b e₃. Its distance
 from the raceway's axis (point o, unit direction a) is d_k = |(c_k − o) − ((c_k − o)·a) a|, along the unit normal
@@ -9,7 +9,8 @@ outside it; −1: a bore with the roller inside), the slice's interference is
 .. math::
     \Delta_k = s\,(R - d_k) + r - h_k,
 
-R the raceway's radius, r the roller's, h_k the crown drops. To first order in the tilts this is document 003's
+R the raceway's radius, r the roller's, h_k the crown drops. Against a plane (a cage pocket's wall: point o, unit
+normal a towards the roller) it is Δ_k = r − (c_k − o)·a − h_k with n_k = a and s = 1. To first order in the tilts this is document 003's
 Δ_k = δ + α z_k − h_k (the approach δ at the roller's centre, the relative tilt α: eq. 12 there). A slice in contact
 carries
 
@@ -44,6 +45,9 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
     the power its damping and friction dissipate [W] and the energy its slices store [J]."""
     b, g = packed.race_roller[contact], packed.race_ring[contact]
     s, radius, roller_radius = packed.race_side[contact], packed.race_radius[contact], packed.race_roller_radius[contact]
+    plane = s == 0.0
+    if plane:  # the force on the roller is along the plane's normal, as an inner raceway's is along its n
+        s = 1.0
     coefficient = packed.race_coefficient[contact] * packed.race_width[contact]
     exponent, tau = packed.race_exponent[contact], packed.race_damping_time[contact]
     mu, regularisation = packed.race_friction[contact], packed.race_regularisation_speed[contact]
@@ -64,13 +68,19 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         c0, c1, c2 = position[b, 0] + z * e0, position[b, 1] + z * e1, position[b, 2] + z * e2
         r0, r1, r2 = c0 - o0, c1 - o1, c2 - o2
         along = r0 * a0 + r1 * a1 + r2 * a2
-        d0, d1, d2 = r0 - along * a0, r1 - along * a1, r2 - along * a2
-        d = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
-        interference = s * (radius - d) + roller_radius - packed.race_drops[contact, k]
         slice_loads[contact, k] = 0.0
-        if interference <= 0.0 or d == 0.0:
+        if plane:  # the distance from the plane, along its normal towards the roller
+            interference = roller_radius - along - packed.race_drops[contact, k]
+            n0, n1, n2 = a0, a1, a2
+        else:
+            d0, d1, d2 = r0 - along * a0, r1 - along * a1, r2 - along * a2
+            d = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+            if d == 0.0:
+                continue
+            interference = s * (radius - d) + roller_radius - packed.race_drops[contact, k]
+            n0, n1, n2 = d0 / d, d1 / d, d2 / d
+        if interference <= 0.0:
             continue
-        n0, n1, n2 = d0 / d, d1 / d, d2 / d
         # the arm of the roller's material point at P_k, and its velocity relative to the ring's there
         l0, l1, l2 = z * e0 - s * roller_radius * n0, z * e1 - s * roller_radius * n1, z * e2 - s * roller_radius * n2
         u0, u1, u2, p0, p1, p2 = relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world)

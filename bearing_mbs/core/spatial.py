@@ -107,19 +107,21 @@ class TranslationSpring:
                              f">= 0")
 
 
-#: The sides of a raceway: ``inner`` is a ring's outer surface (the roller outside it), ``outer`` a bore (the roller
-#: inside it); the sign s of the interference s (R − d) + r − h.
-RACEWAY_SIDES = {"inner": 1.0, "outer": -1.0}
+#: The surfaces a sliced contact runs on: ``inner`` a cylinder's outer surface (an inner ring's raceway, the roller
+#: outside it) and ``outer`` a bore (the roller inside it), with the sign s of the interference s (R − d) + r − h;
+#: ``plane`` a plane (a cage pocket's wall), code 0.
+RACEWAY_SIDES = {"inner": 1.0, "outer": -1.0, "plane": 0.0}
 
 
 @dataclass(frozen=True)
 class SlicedRaceway:
-    """A roller against a cylindrical raceway, as a line contact cut into slices (document 003's slices, in three
-    dimensions: :mod:`bearing_mbs.contact.sliced_raceway`).
+    """A roller against a cylindrical raceway or a plane, as a line contact cut into slices (document 003's slices,
+    in three dimensions: :mod:`bearing_mbs.contact.sliced_raceway`).
 
-    roller, ring: body indices (ring −1: the ground); the roller's axis is its body axis 3. centre [m] and axis
-    (unit) of the raceway's cylinder, in the ring's frame (the world's for the ground). raceway_radius R [m] > 0;
-    side: ``inner`` or ``outer`` (:data:`RACEWAY_SIDES`); roller_radius r [m] > 0. positions: the slice centres
+    roller, ring: body indices (ring −1: the ground); the roller's axis is its body axis 3. side: ``inner``,
+    ``outer`` or ``plane`` (:data:`RACEWAY_SIDES`). For a cylinder, centre [m] and axis (unit) of its axis, in the
+    ring's frame (the world's for the ground), and its radius raceway_radius R [m] > 0; for a plane, a point of it
+    and its unit normal towards the roller (raceway_radius unused). roller_radius r [m] > 0. positions: the slice centres
     z_k [m] along the roller's axis from its centre; drops: the summed crown drops h_k [m] >= 0 of roller and
     raceway there; width: the slice width w [m] > 0. A slice carries Q_k = C_f w Δ_k^(n−1) (Δ_k + n τ Δ̇_k) >= 0
     at interference Δ_k > 0: coefficient C_f [N/m^(n+1)] > 0, exponent n >= 1, damping_time τ [s] >= 0
@@ -160,6 +162,8 @@ class SlicedRaceway:
             raise ValueError(f"{owner}: needs at least one slice and drops >= 0, got {slices} slices, drops "
                              f"{self.drops}")
         for field in ("raceway_radius", "roller_radius", "width", "coefficient"):
+            if field == "raceway_radius" and self.side == "plane":
+                continue
             if not getattr(self, field) > 0:
                 raise ValueError(f"{owner}: {field} must be > 0, got {getattr(self, field)}")
         if not (self.exponent >= 1 and self.damping_time >= 0):
@@ -219,9 +223,29 @@ class FlangeContact:
 
 
 @dataclass(frozen=True)
+class SpinServo:
+    """A drive that holds body ``body``'s angular velocity about the unit world ``axis`` at ``speed`` Ω [rad/s]: the
+    moment M = g (Ω − ω·a) a [N m] with gain g [N m s] > 0 (a motor's speed loop, or a shaft stiff in torsion)."""
+
+    body: int
+    axis: tuple[float, float, float]
+    speed: float
+    gain: float
+
+    def __post_init__(self):
+        owner = f"spin servo on body {self.body}"
+        object.__setattr__(self, "axis", _vector(owner, "axis", self.axis, 3))
+        if abs(math.sqrt(sum(x * x for x in self.axis)) - 1.0) > UNIT_TOLERANCE:
+            raise ValueError(f"{owner}: axis {self.axis} must be a unit vector")
+        if not (math.isfinite(self.speed) and self.gain > 0):
+            raise ValueError(f"{owner}: speed {self.speed} rad/s must be finite and gain {self.gain} N m s > 0")
+
+
+@dataclass(frozen=True)
 class SpatialScene:
     """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
-    springs that hold coordinates, sliced roller–raceway contacts, and gravity g [m/s²] in the world frame."""
+    springs that hold a centre along a direction, sliced roller–raceway (and roller–pocket) contacts, roller
+    end–flange contacts, spin servos, and gravity g [m/s²] in the world frame."""
 
     name: str
     bodies: tuple[SpatialBody, ...]
@@ -230,6 +254,7 @@ class SpatialScene:
     springs: tuple[TranslationSpring, ...] = ()
     raceways: tuple[SlicedRaceway, ...] = ()
     flanges: tuple[FlangeContact, ...] = ()
+    servos: tuple[SpinServo, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
@@ -238,7 +263,8 @@ class SpatialScene:
             raise ValueError(f"{owner}: bodies must not be empty")
         object.__setattr__(self, "gravity", _vector(owner, "gravity", self.gravity, 3))
         count = len(self.bodies)
-        for what, items in (("moment", self.moments), ("force", self.forces), ("spring", self.springs)):
+        for what, items in (("moment", self.moments), ("force", self.forces), ("spring", self.springs),
+                            ("servo", self.servos)):
             for item in items:
                 if not 0 <= item.body < count:
                     raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
@@ -252,7 +278,7 @@ class SpatialScene:
     @property
     def has_forces(self) -> bool:
         """It has force elements beyond gravity (the engines' force kernel runs only then)."""
-        return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges)
+        return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges or self.servos)
 
     def packed(self) -> SpatialPacked:
         """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""
@@ -281,7 +307,9 @@ class SpatialScene:
             column(races, lambda c: c.coefficient), column(races, lambda c: c.exponent),
             column(races, lambda c: c.damping_time), column(races, lambda c: c.friction_coefficient),
             column(races, lambda c: c.regularisation_speed),
-            *_flange_columns(self.flanges, column))
+            *_flange_columns(self.flanges, column),
+            column(self.servos, lambda d: d.body, int), column(self.servos, lambda d: d.axis, shape=(3,)),
+            column(self.servos, lambda d: d.speed), column(self.servos, lambda d: d.gain))
 
 
 def _flange_columns(flanges, column) -> tuple:
@@ -336,6 +364,10 @@ class SpatialPacked(NamedTuple):
     flange_damping_time: np.ndarray
     flange_friction: np.ndarray
     flange_regularisation_speed: np.ndarray
+    servo_body: np.ndarray
+    servo_axis: np.ndarray
+    servo_speed: np.ndarray
+    servo_gain: np.ndarray
 
 
 class SpatialSeries(NamedTuple):

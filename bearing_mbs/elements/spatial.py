@@ -1,6 +1,6 @@
 """The force elements of a spatial scene, summed per body (compiled; both engines call it): world forces, body-fixed
-moments, springs that hold a coordinate, sliced raceway contacts (:mod:`bearing_mbs.contact.sliced_raceway`) and
-flange contacts (:mod:`bearing_mbs.contact.flange`)."""
+moments, springs that hold a centre along a direction, spin servos, sliced raceway and pocket contacts
+(:mod:`bearing_mbs.contact.sliced_raceway`) and flange contacts (:mod:`bearing_mbs.contact.flange`)."""
 
 from __future__ import annotations
 
@@ -71,6 +71,13 @@ def spatial_forces(packed, position, velocity, omega_body, work):
             force[b, j] -= pull * e[j]
         stored += 0.5 * packed.spring_stiffness[k] * stretch * stretch
         dissipated += packed.spring_damping[k] * speed * speed
+    for k in range(packed.servo_body.size):  # M = g (Ω − ω·a) a, in the world frame
+        b, a = packed.servo_body[k], packed.servo_axis[k]
+        spin = omega_world[b, 0] * a[0] + omega_world[b, 1] * a[1] + omega_world[b, 2] * a[2]
+        torque = packed.servo_gain[k] * (packed.servo_speed[k] - spin)
+        for j in range(3):
+            moment_world[b, j] += torque * a[j]
+        supplied += torque * spin
     for contact in range(packed.race_roller.size):
         lost, kept = add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force,
                                         moment_world, work.slice_loads)
