@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from bearing_mbs.contact.line_contact import sliced_contact, slice_coefficient
+from bearing_mbs.contact.line_contact import slice_coefficient, sliced_contact
 from bearing_mbs.core.spatial import SlicedRaceway, SpatialBody, SpatialScene, SpinServo, energy_audit
 from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
 from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
