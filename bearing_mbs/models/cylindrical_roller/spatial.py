@@ -1,0 +1,184 @@
+"""The caged cylindrical roller bearing in three dimensions (issue 31): a spec of this model as a
+:class:`~bearing_mbs.core.spatial.SpatialScene`.
+
+Bodies, each with six degrees of freedom: the inner ring (0), the cage (1) and the Z rollers (2 …), on the geometry
+of :class:`~.geometry.BearingGeometry`; the outer ring is the ground. The bearing's axis is the world's z axis, the
+radial plane the planar model's (x, y).
+
+* Rollers against the raceways: sliced line contacts (:mod:`bearing_mbs.contact.sliced_raceway`) with the group's
+  line law as the whole roller's, Q = K δ^n (Palmgren's K, or the one given), cut into ``slices`` straight slices;
+  the group's dry friction law on each slice.
+* Rollers in their pockets: the same contact against the pocket's two flat walls (:meth:`.BearingGeometry.pocket_walls`,
+  in the cage's frame), with the pocket group's law. The cage is guided by its rollers; a stiff axial spring holds
+  its axial position (nothing else would: its pockets' end walls are not modelled).
+* Flanges: an NU-type arrangement, the outer ring's two ribs (planes z = ±(L_w/2 + ``axial_play``/2), their band
+  from the outer raceway down by ``rib_height`` × D_w) against the rollers' spherical ends (radius ``end_radius`` ×
+  D_pw), Hertz's law for steel, the outer raceway's friction.
+* The inner ring: driven about the bearing's axis by a spin servo of the planar model's gain (the ring's inertia over
+  ``drive.servo_time_constant``), the radial load at its angle, a stiff axial spring (the shaft's location).
+* Contacts are damped in proportion to their stiffness (``damping_time``), not by the planar model's restitution
+  law: the three-dimensional contacts have no latched approach speed yet.
+
+Not yet in three dimensions (refused here with the field that asks for them): EHL traction, lubricant drags and
+films, land-guided cages, the constraint and full-complement cages, the gear train, load and speed profiles.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from bearing_mbs.contact.line_contact import reduced_modulus, slice_coefficient
+from bearing_mbs.contact.point_contact import hertz_stiffness
+from bearing_mbs.core.spatial import (
+    BodyForce,
+    FlangeContact,
+    SlicedRaceway,
+    SpatialBody,
+    SpatialScene,
+    SpinServo,
+    TranslationSpring,
+)
+from bearing_mbs.core.topology import Group
+from bearing_mbs.models.cylindrical_roller.build import group_law
+from bearing_mbs.models.cylindrical_roller.drivetrain import initial_speed
+from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.spec.fields import SpecError
+
+INNER_RING, CAGE, FIRST_ROLLER = 0, 1, 2
+#: The raceway contacts of roller k are 4k + these (indices into the scene's raceways and slice loads).
+INNER, OUTER, POCKET_P, POCKET_Q = range(4)
+#: The axial springs' stiffness [N/m] (cage and inner ring): stiff against the loads that reach them.
+AXIAL_STIFFNESS = 1e8
+
+
+class SpatialBearing(NamedTuple):
+    """The three-dimensional bearing of a spec: its scene and what the outputs need (the geometry, the epicyclic
+    cage speed [rad/s] of the inner ring's speed)."""
+
+    scene: SpatialScene
+    geometry: BearingGeometry
+    epicyclic_cage_speed: float
+
+
+def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, end_radius: float = 0.5,
+                          rib_height: float = 0.3, axial_play: float = 2e-5) -> SpatialBearing:
+    """The bearing of ``spec`` (this model's :class:`~.spec.Spec`) in three dimensions (the module's docstring):
+    ``slices`` per roller contact (integer >= 1), ``damping_time`` τ [s] >= 0 of every contact, the rollers' end
+    spheres' radius ``end_radius`` × D_pw > 0, the ribs' height ``rib_height`` × D_w in (0, 1), the rollers' total
+    axial play between the ribs ``axial_play`` [m] >= 0."""
+    _check_supported(spec)
+    if not (isinstance(slices, int) and slices >= 1 and damping_time >= 0 and end_radius > 0
+            and 0 < rib_height < 1 and axial_play >= 0):
+        raise SpecError("spatial", (slices, damping_time, end_radius, rib_height, axial_play),
+                        "slices must be an integer >= 1, damping_time >= 0 s, end_radius > 0, rib_height in (0, 1) "
+                        "and axial_play >= 0 m")
+    geometry = BearingGeometry.from_spec(spec.bearing)
+    geometry.require_cage(spec.bearing)
+    speed = initial_speed(spec.drive)
+    rolling = spec.drive.initial_state == "rolling"
+    cage_speed = geometry.epicyclic_cage_speed(speed) if rolling else 0.0
+    spin = geometry.epicyclic_roller_spin(speed) if rolling else 0.0
+
+    bodies = [_ring("inner_ring", geometry.inner_ring_mass, geometry.inner_ring_inertia, spec.bearing.ring_width,
+                    speed),
+              _ring("cage", geometry.cage_mass, geometry.cage_inertia, spec.bearing.cage_width, cage_speed)]
+    r, length, mass = geometry.roller_diameter / 2, geometry.roller_length, geometry.roller_mass
+    transverse = mass * (3 * r**2 + length**2) / 12
+    pitch_radius = geometry.pitch_diameter / 2
+    for k, psi in enumerate(geometry.roller_angles):
+        x, y = pitch_radius * math.cos(psi), pitch_radius * math.sin(psi)
+        bodies.append(SpatialBody(f"roller{k}", mass, (transverse, transverse, geometry.roller_inertia),
+                                  position=(x, y, 0.0), velocity=(-cage_speed * y, cage_speed * x, 0.0),
+                                  angular_velocity=(0.0, 0.0, spin)))
+
+    raceways = tuple(contact for k in range(geometry.rollers)
+                     for contact in _roller_contacts(spec, geometry, k, slices, damping_time))
+    flanges = tuple(flange for k in range(geometry.rollers)
+                    for flange in _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time))
+    load = spec.load
+    angle = math.radians(load.angle)
+    forces = (BodyForce(INNER_RING, (load.radial * math.cos(angle), load.radial * math.sin(angle), 0.0)),) \
+        if load.radial > 0 else ()
+    servo = SpinServo(INNER_RING, (0.0, 0.0, 1.0), speed, geometry.inner_ring_inertia / spec.drive.servo_time_constant)
+    springs = tuple(TranslationSpring(body, (0.0, 0.0, 1.0), AXIAL_STIFFNESS, 2 * math.sqrt(
+        AXIAL_STIFFNESS * bodies[body].mass)) for body in (INNER_RING, CAGE))
+    scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
+                         raceways=raceways, flanges=flanges, servos=(servo,),
+                         gravity=(0.0, -spec.scenario.gravity, 0.0))
+    return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed))
+
+
+def _check_supported(spec) -> None:
+    """Refuse, naming the field, what the three-dimensional bearing does not model yet."""
+    refusals = (("cage.model", spec.cage.model, spec.cage.model == "penalty", "the penalty cage only"),
+                ("bearing.cage_guidance", spec.bearing.cage_guidance, spec.bearing.cage_guidance == "rollers",
+                 "a roller-guided cage only"),
+                ("drive.kind", spec.drive.kind, spec.drive.kind == "speed", "a speed drive only"),
+                ("drive.profile", spec.drive.profile, spec.drive.profile == "constant", "a constant speed only"),
+                ("load.profile", spec.load.profile, spec.load.profile == "constant", "a constant load only"),
+                ("lubricant.model", spec.lubricant.model, spec.lubricant.model == "none", "no lubricant drags"))
+    for field, value, supported, allowed in refusals:
+        if not supported:
+            raise SpecError(field, value, f"the three-dimensional bearing models {allowed} so far (docs/spatial.md)")
+    for group in (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET):
+        law = getattr(spec.contact, group).friction_law
+        if law not in ("erf", "none"):
+            raise SpecError(f"contact.{group}.friction_law", law,
+                            "the three-dimensional contacts have the erf law (or none) so far (docs/spatial.md)")
+
+
+def _ring(name: str, mass: float, polar: float, width: float, speed: float) -> SpatialBody:
+    """A ring of polar moment ``polar`` [kg m²] and axial ``width`` [m]: its transverse moment, that of a thin-walled
+    annulus about a diameter, polar/2 + m w²/12."""
+    transverse = polar / 2 + mass * width**2 / 12
+    return SpatialBody(name, mass, (transverse, transverse, polar), angular_velocity=(0.0, 0.0, speed))
+
+
+def _roller_contacts(spec, geometry: BearingGeometry, k: int, slices: int, damping_time: float) -> list:
+    """Roller k's inner raceway, outer raceway and pocket walls P and Q, in that order."""
+    length = geometry.roller_length
+    positions = tuple(length * (-0.5 + (np.arange(slices) + 0.5) / slices))
+    common = {"roller": FIRST_ROLLER + k, "roller_radius": geometry.roller_diameter / 2, "positions": positions,
+              "drops": (0.0,) * slices, "width": length / slices, "damping_time": damping_time}
+
+    def law(group):
+        pair = group_law(spec, geometry, group)
+        friction = pair.friction_coefficient if pair.friction_law != "none" else 0.0
+        return {"coefficient": float(slice_coefficient(pair.stiffness, length)), "exponent": pair.exponent,
+                "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed}
+
+    contacts = [
+        SlicedRaceway(f"roller{k}-inner_race", ring=INNER_RING, centre=(0, 0, 0), axis=(0, 0, 1),
+                      raceway_radius=geometry.inner_race_diameter / 2, side="inner", **law(Group.INNER_RACE),
+                      **common),
+        SlicedRaceway(f"roller{k}-outer_race", ring=-1, centre=(0, 0, 0), axis=(0, 0, 1),
+                      raceway_radius=geometry.outer_race_diameter / 2, side="outer", **law(Group.OUTER_RACE),
+                      **common)]
+    pocket = law(Group.POCKET)
+    for label, (point, normal) in geometry.pocket_walls(k).items():
+        contacts.append(SlicedRaceway(f"roller{k}-pocket_{label}", ring=CAGE, centre=(*point, 0.0),
+                                      axis=(*normal, 0.0), raceway_radius=0.0, side="plane", **pocket, **common))
+    return contacts
+
+
+def _ribs(spec, geometry: BearingGeometry, k: int, end_radius: float, rib_height: float, axial_play: float,
+          damping_time: float) -> list:
+    """Roller k's two ends against the outer ring's ribs."""
+    bearing = spec.bearing
+    roller, ring = bearing.roller_material, bearing.ring_material
+    radius = end_radius * geometry.pitch_diameter
+    modulus = reduced_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus, ring.poisson_ratio)
+    outer = group_law(spec, geometry, Group.OUTER_RACE)
+    friction = outer.friction_coefficient if outer.friction_law != "none" else 0.0
+    race = geometry.outer_race_diameter / 2
+    half = geometry.roller_length / 2
+    return [FlangeContact(f"roller{k}-rib{'+' if end > 0 else '-'}", roller=FIRST_ROLLER + k, ring=-1, end=end,
+                          half_length=half, end_radius=radius, point=(0.0, 0.0, end * (half + axial_play / 2)),
+                          normal=(0.0, 0.0, -end), band=(race - rib_height * geometry.roller_diameter, race),
+                          stiffness=hertz_stiffness((1 / radius, 1 / radius, 0.0, 0.0), modulus),
+                          damping_time=damping_time, friction_coefficient=friction,
+                          regularisation_speed=outer.regularisation_speed)
+            for end in (1, -1)]
