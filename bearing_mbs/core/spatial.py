@@ -120,8 +120,9 @@ class SlicedRaceway:
 
     roller, ring: body indices (ring −1: the ground); the roller's axis is its body axis 3. side: ``inner``,
     ``outer`` or ``plane`` (:data:`RACEWAY_SIDES`). For a cylinder, centre [m] and axis (unit) of its axis, in the
-    ring's frame (the world's for the ground), and its radius raceway_radius R [m] > 0; for a plane, a point of it
-    and its unit normal towards the roller (raceway_radius unused). roller_radius r [m] > 0. positions: the slice centres
+    ring's frame (the world's for the ground), and its radius raceway_radius R [m] > 0 (an ``inner`` one may have
+    R = 0: an edge, as a cage pocket's); for a plane, a point of it and its unit normal towards the roller
+    (raceway_radius unused). roller_radius r [m] > 0. positions: the slice centres
     z_k [m] along the roller's axis from its centre; drops: the summed crown drops h_k [m] >= 0 of roller and
     raceway there; width: the slice width w [m] > 0. A slice carries Q_k = C_f w Δ_k^(n−1) (Δ_k + n τ Δ̇_k) >= 0
     at interference Δ_k > 0: coefficient C_f [N/m^(n+1)] > 0, exponent n >= 1, damping_time τ [s] >= 0
@@ -161,11 +162,12 @@ class SlicedRaceway:
         if slices == 0 or min(self.drops) < 0:
             raise ValueError(f"{owner}: needs at least one slice and drops >= 0, got {slices} slices, drops "
                              f"{self.drops}")
-        for field in ("raceway_radius", "roller_radius", "width", "coefficient"):
-            if field == "raceway_radius" and self.side == "plane":
-                continue
+        for field in ("roller_radius", "width", "coefficient"):
             if not getattr(self, field) > 0:
                 raise ValueError(f"{owner}: {field} must be > 0, got {getattr(self, field)}")
+        if not (self.raceway_radius > 0 or self.side == "plane" or (self.side == "inner" and self.raceway_radius == 0)):
+            raise ValueError(f"{owner}: raceway_radius {self.raceway_radius} m must be > 0 (0 allowed on the inner "
+                             f"side: an edge)")
         if not (self.exponent >= 1 and self.damping_time >= 0):
             raise ValueError(f"{owner}: exponent {self.exponent} must be >= 1 and damping_time {self.damping_time} s "
                              f">= 0")

@@ -8,19 +8,23 @@ radial plane the planar model's (x, y).
 * Rollers against the raceways: sliced line contacts (:mod:`bearing_mbs.contact.sliced_raceway`) with the group's
   line law as the whole roller's, Q = K δ^n (Palmgren's K, or the one given), cut into ``slices`` straight slices;
   the group's dry friction law on each slice.
-* Rollers in their pockets: the same contact against the pocket's two flat walls (:meth:`.BearingGeometry.pocket_walls`,
-  in the cage's frame), with the pocket group's law. The cage is guided by its rollers; a stiff axial spring holds
-  its axial position (nothing else would: its pockets' end walls are not modelled).
+* Rollers in their pockets: the same contact against the pocket's four edges (:meth:`.BearingGeometry.pocket_points`,
+  lines along the axis in the cage's frame, as the planar penalty cage's points), with the pocket group's law.
+* The cage on its land, where it is land-guided: its outer surface in the outer ring's land bore, or the inner
+  ring's land in its bore, as a sliced contact over the cage's width with the land group's law. A stiff axial spring
+  holds the cage's axial position (nothing else would: its pockets' end walls are not modelled).
 * Flanges: an NU-type arrangement, the outer ring's two ribs (planes z = ±(L_w/2 + ``axial_play``/2), their band
   from the outer raceway down by ``rib_height`` × D_w) against the rollers' spherical ends (radius ``end_radius`` ×
   D_pw), Hertz's law for steel, the outer raceway's friction.
 * The inner ring: driven about the bearing's axis by a spin servo of the planar model's gain (the ring's inertia over
   ``drive.servo_time_constant``), the radial load at its angle, a stiff axial spring (the shaft's location).
 * Contacts are damped in proportion to their stiffness (``damping_time``), not by the planar model's restitution
-  law: the three-dimensional contacts have no latched approach speed yet.
+  laws: the three-dimensional contacts have no latched approach speed yet. With the planar model's ``power`` law and
+  ``damping_time = 0`` the two models are the same bearing, and an aligned run reproduces the planar one
+  (tests/test_spatial_bearing.py).
 
-Not yet in three dimensions (refused here with the field that asks for them): EHL traction, lubricant drags and
-films, land-guided cages, the constraint and full-complement cages, the gear train, load and speed profiles.
+Not yet in three dimensions (refused here with the field that asks for them): EHL traction, rolling resistance,
+lubricant drags and films, the constraint and full-complement cages, the gear train, load and speed profiles.
 """
 
 from __future__ import annotations
@@ -48,8 +52,10 @@ from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.spec.fields import SpecError
 
 INNER_RING, CAGE, FIRST_ROLLER = 0, 1, 2
-#: The raceway contacts of roller k are 4k + these (indices into the scene's raceways and slice loads).
-INNER, OUTER, POCKET_P, POCKET_Q = range(4)
+#: The sliced contacts of roller k are 6k + these (indices into the scene's raceways and slice loads): its
+#: raceways, then its pocket's edges P, Q, P_inner, Q_inner; the cage's land contact, if any, is the last.
+INNER, OUTER, POCKET = 0, 1, slice(2, 6)
+CONTACTS_PER_ROLLER = 6
 #: The axial springs' stiffness [N/m] (cage and inner ring): stiff against the loads that reach them.
 AXIAL_STIFFNESS = 1e8
 
@@ -61,6 +67,12 @@ class SpatialBearing(NamedTuple):
     scene: SpatialScene
     geometry: BearingGeometry
     epicyclic_cage_speed: float
+
+    def roller_loads(self, series, contact: int = INNER) -> np.ndarray:
+        """Each roller's load [N] on its ``contact`` (:data:`INNER` or :data:`OUTER` raceway) at the output instants
+        of ``series`` (a run of :attr:`scene`): the sum of its slice loads, (T, Z)."""
+        rollers = self.geometry.rollers
+        return series.slice_loads[:, contact:CONTACTS_PER_ROLLER * rollers:CONTACTS_PER_ROLLER].sum(axis=2)
 
 
 def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, end_radius: float = 0.5,
@@ -96,6 +108,7 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
 
     raceways = tuple(contact for k in range(geometry.rollers)
                      for contact in _roller_contacts(spec, geometry, k, slices, damping_time))
+    raceways += _land(spec, geometry, slices, damping_time)
     flanges = tuple(flange for k in range(geometry.rollers)
                     for flange in _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time))
     load = spec.load
@@ -114,8 +127,6 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
 def _check_supported(spec) -> None:
     """Refuse, naming the field, what the three-dimensional bearing does not model yet."""
     refusals = (("cage.model", spec.cage.model, spec.cage.model == "penalty", "the penalty cage only"),
-                ("bearing.cage_guidance", spec.bearing.cage_guidance, spec.bearing.cage_guidance == "rollers",
-                 "a roller-guided cage only"),
                 ("drive.kind", spec.drive.kind, spec.drive.kind == "speed", "a speed drive only"),
                 ("drive.profile", spec.drive.profile, spec.drive.profile == "constant", "a constant speed only"),
                 ("load.profile", spec.load.profile, spec.load.profile == "constant", "a constant load only"),
@@ -123,11 +134,14 @@ def _check_supported(spec) -> None:
     for field, value, supported, allowed in refusals:
         if not supported:
             raise SpecError(field, value, f"the three-dimensional bearing models {allowed} so far (docs/spatial.md)")
-    for group in (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET):
-        law = getattr(spec.contact, group).friction_law
-        if law not in ("erf", "none"):
-            raise SpecError(f"contact.{group}.friction_law", law,
+    for group in (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.LAND):
+        contact = getattr(spec.contact, group)
+        if contact.friction_law not in ("erf", "none"):
+            raise SpecError(f"contact.{group}.friction_law", contact.friction_law,
                             "the three-dimensional contacts have the erf law (or none) so far (docs/spatial.md)")
+        if contact.rolling_resistance_arm > 0:
+            raise SpecError(f"contact.{group}.rolling_resistance_arm", contact.rolling_resistance_arm,
+                            "the three-dimensional contacts have no rolling resistance so far: 0 (docs/spatial.md)")
 
 
 def _ring(name: str, mass: float, polar: float, width: float, speed: float) -> SpatialBody:
@@ -137,31 +151,52 @@ def _ring(name: str, mass: float, polar: float, width: float, speed: float) -> S
     return SpatialBody(name, mass, (transverse, transverse, polar), angular_velocity=(0.0, 0.0, speed))
 
 
+def _law(spec, geometry: BearingGeometry, group: str, length: float) -> dict:
+    """A group's law as a sliced contact's: the whole line's Q = K δ^n over ``length`` [m], its dry friction."""
+    pair = group_law(spec, geometry, group)
+    friction = pair.friction_coefficient if pair.friction_law != "none" else 0.0
+    return {"coefficient": float(slice_coefficient(pair.stiffness, length)), "exponent": pair.exponent,
+            "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed}
+
+
+def _slices(length: float, slices: int, damping_time: float) -> dict:
+    """The straight slices of a line of ``length`` [m]."""
+    return {"positions": tuple(length * (-0.5 + (np.arange(slices) + 0.5) / slices)), "drops": (0.0,) * slices,
+            "width": length / slices, "damping_time": damping_time}
+
+
 def _roller_contacts(spec, geometry: BearingGeometry, k: int, slices: int, damping_time: float) -> list:
-    """Roller k's inner raceway, outer raceway and pocket walls P and Q, in that order."""
+    """Roller k's inner raceway, outer raceway and pocket edges, in the order of :data:`CONTACTS_PER_ROLLER`."""
     length = geometry.roller_length
-    positions = tuple(length * (-0.5 + (np.arange(slices) + 0.5) / slices))
-    common = {"roller": FIRST_ROLLER + k, "roller_radius": geometry.roller_diameter / 2, "positions": positions,
-              "drops": (0.0,) * slices, "width": length / slices, "damping_time": damping_time}
-
-    def law(group):
-        pair = group_law(spec, geometry, group)
-        friction = pair.friction_coefficient if pair.friction_law != "none" else 0.0
-        return {"coefficient": float(slice_coefficient(pair.stiffness, length)), "exponent": pair.exponent,
-                "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed}
-
+    common = {"roller": FIRST_ROLLER + k, "roller_radius": geometry.roller_diameter / 2,
+              **_slices(length, slices, damping_time)}
     contacts = [
         SlicedRaceway(f"roller{k}-inner_race", ring=INNER_RING, centre=(0, 0, 0), axis=(0, 0, 1),
-                      raceway_radius=geometry.inner_race_diameter / 2, side="inner", **law(Group.INNER_RACE),
-                      **common),
+                      raceway_radius=geometry.inner_race_diameter / 2, side="inner",
+                      **_law(spec, geometry, Group.INNER_RACE, length), **common),
         SlicedRaceway(f"roller{k}-outer_race", ring=-1, centre=(0, 0, 0), axis=(0, 0, 1),
-                      raceway_radius=geometry.outer_race_diameter / 2, side="outer", **law(Group.OUTER_RACE),
-                      **common)]
-    pocket = law(Group.POCKET)
-    for label, (point, normal) in geometry.pocket_walls(k).items():
-        contacts.append(SlicedRaceway(f"roller{k}-pocket_{label}", ring=CAGE, centre=(*point, 0.0),
-                                      axis=(*normal, 0.0), raceway_radius=0.0, side="plane", **pocket, **common))
+                      raceway_radius=geometry.outer_race_diameter / 2, side="outer",
+                      **_law(spec, geometry, Group.OUTER_RACE, length), **common)]
+    pocket = _law(spec, geometry, Group.POCKET, length)
+    for label, point in geometry.pocket_points(k).items():  # an edge: a line along the axis, a cylinder of radius 0
+        contacts.append(SlicedRaceway(f"roller{k}-pocket_{label}", ring=CAGE, centre=(*point, 0.0), axis=(0, 0, 1),
+                                      raceway_radius=0.0, side="inner", **pocket, **common))
     return contacts
+
+
+def _land(spec, geometry: BearingGeometry, slices: int, damping_time: float) -> tuple:
+    """The cage's land contact (none for a roller-guided cage): the cage in the outer ring's land bore, or the inner
+    ring's land in the cage's bore."""
+    guidance, width = spec.bearing.cage_guidance, spec.bearing.cage_width
+    common = {**_law(spec, geometry, Group.LAND, width), **_slices(width, slices, damping_time),
+              "centre": (0, 0, 0), "axis": (0, 0, 1), "side": "outer"}
+    if guidance == "outer_land":
+        return (SlicedRaceway("cage-outer_land", roller=CAGE, ring=-1, roller_radius=geometry.cage_outer_radius,
+                              raceway_radius=geometry.outer_land_radius, **common),)
+    if guidance == "inner_land":
+        return (SlicedRaceway("cage-inner_land", roller=INNER_RING, ring=CAGE, roller_radius=geometry.inner_land_radius,
+                              raceway_radius=geometry.cage_bore_radius, **common),)
+    return ()
 
 
 def _ribs(spec, geometry: BearingGeometry, k: int, end_radius: float, rib_height: float, axial_play: float,
