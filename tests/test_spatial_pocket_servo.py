@@ -66,7 +66,7 @@ def test_bad_servos_and_planes_are_refused():
     with pytest.raises(ValueError):
         SpinServo(0, (0, 0, 1), 10.0, 0.0)
     with pytest.raises(ValueError):
-        SlicedRaceway("c", 0, -1, (0, 0, 0), (0, 0, 1), 0.0, "inner", 0.01, (0.0,), (0.0,), 0.01, 1e10, 10 / 9)
+        SlicedRaceway("c", 0, -1, (0, 0, 0), (0, 0, 1), 0.0, "outer", 0.01, (0.0,), (0.0,), 0.01, 1e10, 10 / 9)
     body = SpatialBody("b", 1.0, (1.0, 1.0, 1.0))
     with pytest.raises(ValueError):
         SpatialScene("s", (body,), servos=(SpinServo(1, (0, 0, 1), 10.0, 1.0),))
