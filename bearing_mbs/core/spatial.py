@@ -244,10 +244,31 @@ class SpinServo:
 
 
 @dataclass(frozen=True)
+class AxisSpring:
+    """A torsion spring and damper that turns body ``body``'s axis 3 towards the unit world direction ``axis``
+    (a shaft that holds a ring's axis, here misaligned): M = k (e₃ × a) − c (ω − (ω·e₃) e₃) [N m], stiffness
+    k [N m/rad] > 0, damping c [N m s/rad] >= 0; it leaves the spin about e₃ free."""
+
+    body: int
+    axis: tuple[float, float, float]
+    stiffness: float
+    damping: float = 0.0
+
+    def __post_init__(self):
+        owner = f"axis spring on body {self.body}"
+        object.__setattr__(self, "axis", _vector(owner, "axis", self.axis, 3))
+        if abs(math.sqrt(sum(x * x for x in self.axis)) - 1.0) > UNIT_TOLERANCE:
+            raise ValueError(f"{owner}: axis {self.axis} must be a unit vector")
+        if not (self.stiffness > 0 and self.damping >= 0):
+            raise ValueError(f"{owner}: stiffness {self.stiffness} N m/rad must be > 0 and damping {self.damping} "
+                             f"N m s/rad >= 0")
+
+
+@dataclass(frozen=True)
 class SpatialScene:
     """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
     springs that hold a centre along a direction, sliced roller–raceway (and roller–pocket) contacts, roller
-    end–flange contacts, spin servos, and gravity g [m/s²] in the world frame."""
+    end–flange contacts, spin servos, springs that hold an axis, and gravity g [m/s²] in the world frame."""
 
     name: str
     bodies: tuple[SpatialBody, ...]
@@ -257,6 +278,7 @@ class SpatialScene:
     raceways: tuple[SlicedRaceway, ...] = ()
     flanges: tuple[FlangeContact, ...] = ()
     servos: tuple[SpinServo, ...] = ()
+    axis_springs: tuple[AxisSpring, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
@@ -266,7 +288,7 @@ class SpatialScene:
         object.__setattr__(self, "gravity", _vector(owner, "gravity", self.gravity, 3))
         count = len(self.bodies)
         for what, items in (("moment", self.moments), ("force", self.forces), ("spring", self.springs),
-                            ("servo", self.servos)):
+                            ("servo", self.servos), ("axis spring", self.axis_springs)):
             for item in items:
                 if not 0 <= item.body < count:
                     raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
@@ -280,7 +302,8 @@ class SpatialScene:
     @property
     def has_forces(self) -> bool:
         """It has force elements beyond gravity (the engines' force kernel runs only then)."""
-        return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges or self.servos)
+        return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges or self.servos
+                    or self.axis_springs)
 
     def packed(self) -> SpatialPacked:
         """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""
@@ -311,7 +334,9 @@ class SpatialScene:
             column(races, lambda c: c.regularisation_speed),
             *_flange_columns(self.flanges, column),
             column(self.servos, lambda d: d.body, int), column(self.servos, lambda d: d.axis, shape=(3,)),
-            column(self.servos, lambda d: d.speed), column(self.servos, lambda d: d.gain))
+            column(self.servos, lambda d: d.speed), column(self.servos, lambda d: d.gain),
+            column(self.axis_springs, lambda a: a.body, int), column(self.axis_springs, lambda a: a.axis, shape=(3,)),
+            column(self.axis_springs, lambda a: a.stiffness), column(self.axis_springs, lambda a: a.damping))
 
 
 def _flange_columns(flanges, column) -> tuple:
@@ -370,6 +395,10 @@ class SpatialPacked(NamedTuple):
     servo_axis: np.ndarray
     servo_speed: np.ndarray
     servo_gain: np.ndarray
+    axis_body: np.ndarray
+    axis_direction: np.ndarray
+    axis_stiffness: np.ndarray
+    axis_damping: np.ndarray
 
 
 class SpatialSeries(NamedTuple):

@@ -1,5 +1,5 @@
 """The force elements of a spatial scene, summed per body (compiled; both engines call it): world forces, body-fixed
-moments, springs that hold a centre along a direction, spin servos, sliced raceway and pocket contacts
+moments, springs that hold a centre along a direction or an axis, spin servos, sliced raceway and pocket contacts
 (:mod:`bearing_mbs.contact.sliced_raceway`) and flange contacts (:mod:`bearing_mbs.contact.flange`)."""
 
 from __future__ import annotations
@@ -78,6 +78,18 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         for j in range(3):
             moment_world[b, j] += torque * a[j]
         supplied += torque * spin
+    for k in range(packed.axis_body.size):  # M = k (e₃ × a) − c ω⊥, in the world frame
+        b, a = packed.axis_body[k], packed.axis_direction[k]
+        e0, e1, e2 = rotation[b, 0, 2], rotation[b, 1, 2], rotation[b, 2, 2]
+        w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
+        along = w0 * e0 + w1 * e1 + w2 * e2
+        p0, p1, p2 = w0 - along * e0, w1 - along * e1, w2 - along * e2  # ω without its spin about e₃
+        stiffness, damping = packed.axis_stiffness[k], packed.axis_damping[k]
+        moment_world[b, 0] += stiffness * (e1 * a[2] - e2 * a[1]) - damping * p0
+        moment_world[b, 1] += stiffness * (e2 * a[0] - e0 * a[2]) - damping * p1
+        moment_world[b, 2] += stiffness * (e0 * a[1] - e1 * a[0]) - damping * p2
+        stored += stiffness * (1.0 - (e0 * a[0] + e1 * a[1] + e2 * a[2]))  # the potential of k (e₃ × a)
+        dissipated += damping * (p0 * p0 + p1 * p1 + p2 * p2)
     for contact in range(packed.race_roller.size):
         lost, kept = add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force,
                                         moment_world, work.slice_loads)

@@ -13,9 +13,12 @@ radial plane the planar model's (x, y).
 * The cage on its land, where it is land-guided: its outer surface in the outer ring's land bore, or the inner
   ring's land in its bore, as a sliced contact over the cage's width with the land group's law. A stiff axial spring
   holds the cage's axial position (nothing else would: its pockets' end walls are not modelled).
-* Flanges: an NU-type arrangement, the outer ring's two ribs (planes z = ±(L_w/2 + ``axial_play``/2), their band
-  from the outer raceway down by ``rib_height`` × D_w) against the rollers' spherical ends (radius ``end_radius`` ×
-  D_pw), Hertz's law for steel, the outer raceway's friction.
+* Flanges: an NJ-type arrangement, the outer ring's two ribs (planes z = ±(L_w/2 + ``axial_play``/2), their band
+  from the outer raceway down by ``rib_height`` × D_w) and the inner ring's rib at −z (its band from the inner
+  raceway up), against the rollers' spherical ends (radius ``end_radius`` × D_pw), Hertz's law for steel, the
+  raceways' friction. The ribs are flat, so a spherical end meets them on the roller's axis: they reach past the
+  pitch circle (0.6 D_w by default), where real ribs are lower and inclined so that the contact sits at their
+  height.
 * The inner ring: driven about the bearing's axis by a spin servo of the planar model's gain (the ring's inertia over
   ``drive.servo_time_constant``), the radial load at its angle, a stiff axial spring (the shaft's location).
 * Contacts are damped in proportion to their stiffness (``damping_time``), not by the planar model's restitution
@@ -29,6 +32,7 @@ lubricant drags and films, the constraint and full-complement cages, the gear tr
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import NamedTuple
 
@@ -37,6 +41,7 @@ import numpy as np
 from bearing_mbs.contact.line_contact import reduced_modulus, slice_coefficient
 from bearing_mbs.contact.point_contact import hertz_stiffness
 from bearing_mbs.core.spatial import (
+    AxisSpring,
     BodyForce,
     FlangeContact,
     SlicedRaceway,
@@ -58,6 +63,9 @@ INNER, OUTER, POCKET = 0, 1, slice(2, 6)
 CONTACTS_PER_ROLLER = 6
 #: The axial springs' stiffness [N/m] (cage and inner ring): stiff against the loads that reach them.
 AXIAL_STIFFNESS = 1e8
+#: The shaft's stiffness [N m/rad] holding the inner ring's axis (critically damped): the rollers' moments of a few
+#: hundred N m turn it by well under a µrad.
+SHAFT_TILT_STIFFNESS = 1e9
 
 
 class SpatialBearing(NamedTuple):
@@ -76,17 +84,24 @@ class SpatialBearing(NamedTuple):
 
 
 def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, end_radius: float = 0.5,
-                          rib_height: float = 0.3, axial_play: float = 2e-5) -> SpatialBearing:
+                          rib_height: float = 0.6, axial_play: float = 2e-4, misalignment: float = 0.0,
+                          axial_load: float = 0.0, crown=None) -> SpatialBearing:
     """The bearing of ``spec`` (this model's :class:`~.spec.Spec`) in three dimensions (the module's docstring):
     ``slices`` per roller contact (integer >= 1), ``damping_time`` τ [s] >= 0 of every contact, the rollers' end
-    spheres' radius ``end_radius`` × D_pw > 0, the ribs' height ``rib_height`` × D_w in (0, 1), the rollers' total
-    axial play between the ribs ``axial_play`` [m] >= 0."""
+    spheres' radius ``end_radius`` × D_pw > 0, the ribs' height ``rib_height`` × D_w in (0.5, 1) (flat ribs meet a
+    spherical end on the roller's axis, so they must reach the pitch circle), the rollers' total
+    axial play between the ribs ``axial_play`` [m] >= 0; the inner ring's ``misalignment`` [rad], its axis tilted
+    about the world x axis (in the plane of a load along y) and held there by a stiff shaft (:class:`AxisSpring`);
+    an ``axial_load`` [N] >= 0 on the inner ring along +z, carried by its rib and the outer ring's (an NJ-type
+    arrangement; without it the inner ring's axial position is held by a stiff spring); the rollers' ``crown``, a
+    profile of :mod:`.quasistatic.profiles` (None: straight)."""
     _check_supported(spec)
     if not (isinstance(slices, int) and slices >= 1 and damping_time >= 0 and end_radius > 0
-            and 0 < rib_height < 1 and axial_play >= 0):
-        raise SpecError("spatial", (slices, damping_time, end_radius, rib_height, axial_play),
-                        "slices must be an integer >= 1, damping_time >= 0 s, end_radius > 0, rib_height in (0, 1) "
-                        "and axial_play >= 0 m")
+            and 0.5 < rib_height < 1 and axial_play >= 0 and math.isfinite(misalignment) and axial_load >= 0):
+        raise SpecError("spatial", (slices, damping_time, end_radius, rib_height, axial_play, misalignment,
+                                    axial_load),
+                        "slices must be an integer >= 1, damping_time >= 0 s, end_radius > 0, rib_height in (0.5, 1), "
+                        "axial_play >= 0 m, misalignment finite and axial_load >= 0 N")
     geometry = BearingGeometry.from_spec(spec.bearing)
     geometry.require_cage(spec.bearing)
     speed = initial_speed(spec.drive)
@@ -94,8 +109,10 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
     cage_speed = geometry.epicyclic_cage_speed(speed) if rolling else 0.0
     spin = geometry.epicyclic_roller_spin(speed) if rolling else 0.0
 
+    tilt = (math.sin(misalignment / 2), 0.0, 0.0)  # the inner ring turned about x: its quaternion's vector part
+    axis = (0.0, -math.sin(misalignment), math.cos(misalignment))  # its axis in the world frame
     bodies = [_ring("inner_ring", geometry.inner_ring_mass, geometry.inner_ring_inertia, spec.bearing.ring_width,
-                    speed),
+                    speed, orientation=(math.cos(misalignment / 2), *tilt)),
               _ring("cage", geometry.cage_mass, geometry.cage_inertia, spec.bearing.cage_width, cage_speed)]
     r, length, mass = geometry.roller_diameter / 2, geometry.roller_length, geometry.roller_mass
     transverse = mass * (3 * r**2 + length**2) / 12
@@ -107,19 +124,24 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
                                   angular_velocity=(0.0, 0.0, spin)))
 
     raceways = tuple(contact for k in range(geometry.rollers)
-                     for contact in _roller_contacts(spec, geometry, k, slices, damping_time))
+                     for contact in _roller_contacts(spec, geometry, k, slices, damping_time, crown))
     raceways += _land(spec, geometry, slices, damping_time)
     flanges = tuple(flange for k in range(geometry.rollers)
                     for flange in _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time))
     load = spec.load
     angle = math.radians(load.angle)
-    forces = (BodyForce(INNER_RING, (load.radial * math.cos(angle), load.radial * math.sin(angle), 0.0)),) \
-        if load.radial > 0 else ()
-    servo = SpinServo(INNER_RING, (0.0, 0.0, 1.0), speed, geometry.inner_ring_inertia / spec.drive.servo_time_constant)
+    flanges += tuple(_inner_rib(spec, geometry, k, end_radius, rib_height, axial_play, damping_time)
+                     for k in range(geometry.rollers))
+    forces = (BodyForce(INNER_RING, (load.radial * math.cos(angle), load.radial * math.sin(angle), axial_load)),) \
+        if load.radial > 0 or axial_load > 0 else ()
+    servo = SpinServo(INNER_RING, axis, speed, geometry.inner_ring_inertia / spec.drive.servo_time_constant)
+    held = (CAGE,) if axial_load > 0 else (INNER_RING, CAGE)  # an axial load finds the ribs
     springs = tuple(TranslationSpring(body, (0.0, 0.0, 1.0), AXIAL_STIFFNESS, 2 * math.sqrt(
-        AXIAL_STIFFNESS * bodies[body].mass)) for body in (INNER_RING, CAGE))
+        AXIAL_STIFFNESS * bodies[body].mass)) for body in held)
+    transverse = bodies[INNER_RING].inertia[0]
+    shaft = AxisSpring(INNER_RING, axis, SHAFT_TILT_STIFFNESS, 2 * math.sqrt(SHAFT_TILT_STIFFNESS * transverse))
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
-                         raceways=raceways, flanges=flanges, servos=(servo,),
+                         raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,),
                          gravity=(0.0, -spec.scenario.gravity, 0.0))
     return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed))
 
@@ -144,11 +166,13 @@ def _check_supported(spec) -> None:
                             "the three-dimensional contacts have no rolling resistance so far: 0 (docs/spatial.md)")
 
 
-def _ring(name: str, mass: float, polar: float, width: float, speed: float) -> SpatialBody:
-    """A ring of polar moment ``polar`` [kg m²] and axial ``width`` [m]: its transverse moment, that of a thin-walled
-    annulus about a diameter, polar/2 + m w²/12."""
+def _ring(name: str, mass: float, polar: float, width: float, speed: float,
+          orientation=(1.0, 0.0, 0.0, 0.0)) -> SpatialBody:
+    """A ring of polar moment ``polar`` [kg m²] and axial ``width`` [m], spinning at ``speed`` [rad/s] about its axis:
+    its transverse moment, that of a thin-walled annulus about a diameter, polar/2 + m w²/12."""
     transverse = polar / 2 + mass * width**2 / 12
-    return SpatialBody(name, mass, (transverse, transverse, polar), angular_velocity=(0.0, 0.0, speed))
+    return SpatialBody(name, mass, (transverse, transverse, polar), orientation=orientation,
+                       angular_velocity=(0.0, 0.0, speed))
 
 
 def _law(spec, geometry: BearingGeometry, group: str, length: float) -> dict:
@@ -159,17 +183,19 @@ def _law(spec, geometry: BearingGeometry, group: str, length: float) -> dict:
             "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed}
 
 
-def _slices(length: float, slices: int, damping_time: float) -> dict:
-    """The straight slices of a line of ``length`` [m]."""
-    return {"positions": tuple(length * (-0.5 + (np.arange(slices) + 0.5) / slices)), "drops": (0.0,) * slices,
-            "width": length / slices, "damping_time": damping_time}
+def _slices(length: float, slices: int, damping_time: float, crown=None) -> dict:
+    """The slices of a line of ``length`` [m], with the drops of ``crown`` (None: straight)."""
+    positions = length * (-0.5 + (np.arange(slices) + 0.5) / slices)
+    drops = crown.drop(positions) if crown is not None else np.zeros(slices)
+    return {"positions": tuple(positions), "drops": tuple(float(d) for d in drops), "width": length / slices,
+            "damping_time": damping_time}
 
 
-def _roller_contacts(spec, geometry: BearingGeometry, k: int, slices: int, damping_time: float) -> list:
+def _roller_contacts(spec, geometry: BearingGeometry, k: int, slices: int, damping_time: float, crown) -> list:
     """Roller k's inner raceway, outer raceway and pocket edges, in the order of :data:`CONTACTS_PER_ROLLER`."""
     length = geometry.roller_length
     common = {"roller": FIRST_ROLLER + k, "roller_radius": geometry.roller_diameter / 2,
-              **_slices(length, slices, damping_time)}
+              **_slices(length, slices, damping_time, crown)}
     contacts = [
         SlicedRaceway(f"roller{k}-inner_race", ring=INNER_RING, centre=(0, 0, 0), axis=(0, 0, 1),
                       raceway_radius=geometry.inner_race_diameter / 2, side="inner",
@@ -217,3 +243,17 @@ def _ribs(spec, geometry: BearingGeometry, k: int, end_radius: float, rib_height
                           damping_time=damping_time, friction_coefficient=friction,
                           regularisation_speed=outer.regularisation_speed)
             for end in (1, -1)]
+
+
+def _inner_rib(spec, geometry: BearingGeometry, k: int, end_radius: float, rib_height: float, axial_play: float,
+               damping_time: float) -> FlangeContact:
+    """Roller k's end at −z against the inner ring's rib (an NJ-type bearing): pushed along +z, the inner ring takes
+    the rollers against the outer ring's rib at +z."""
+    outer = _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time)[1]  # the rib at −z
+    race = geometry.inner_race_diameter / 2
+    inner = group_law(spec, geometry, Group.INNER_RACE)
+    return dataclasses.replace(
+        outer, name=f"roller{k}-inner_rib", ring=INNER_RING, normal=(0.0, 0.0, 1.0),
+        band=(race, race + rib_height * geometry.roller_diameter),
+        friction_coefficient=inner.friction_coefficient if inner.friction_law != "none" else 0.0,
+        regularisation_speed=inner.regularisation_speed)
