@@ -1,21 +1,32 @@
-"""A roller against a plane (a cage pocket's wall) and the spin servo, in three dimensions (issue 31).
+"""A roller against a plane (a cage pocket's wall), the spin servo and the axis spring, in three dimensions (issue 31).
 
 References (independent of the kernel):
 * a straight roller tilted against a plane carries document 003's slice loads Q_k = C_f w (δ + α z_k)^n
   (``sliced_contact`` of the quasi-static model, eq. 12 and 14 there), to the three-dimensional kinematics'
   second-order difference: within 1e-6 of the largest slice load for α = 2e-4;
 * a free body spun up by the servo M = g (Ω − ω): ω(t) = Ω (1 − exp(−g t/I)), within 1e-6 of Ω (RK4 at 1e-4 s
-  against a time constant of 0.05 s); the servo's work closes the energy audit within 1e-6 of it.
+  against a time constant of 0.05 s); the servo's work closes the energy audit within 1e-6 of it;
+* a body whose axis a spring holds, turned by a constant moment: k sin θ = M (1e-6 relative).
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
 from bearing_mbs.contact.line_contact import slice_coefficient, sliced_contact
-from bearing_mbs.core.spatial import SlicedRaceway, SpatialBody, SpatialScene, SpinServo, energy_audit
+from bearing_mbs.core.spatial import (
+    AxisSpring,
+    BodyMoment,
+    SlicedRaceway,
+    SpatialBody,
+    SpatialScene,
+    SpinServo,
+    energy_audit,
+)
 from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
 from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
 from bearing_mbs.models.cylindrical_roller.quasistatic import RollerSet, SlicedRollerSet
@@ -70,3 +81,17 @@ def test_bad_servos_and_planes_are_refused():
     body = SpatialBody("b", 1.0, (1.0, 1.0, 1.0))
     with pytest.raises(ValueError):
         SpatialScene("s", (body,), servos=(SpinServo(1, (0, 0, 1), 10.0, 1.0),))
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_an_axis_spring_holds_an_axis_against_a_moment(engine):
+    """A body whose axis a shaft holds along z (stiffness k, damped), turned by a constant moment M about its x axis:
+    it settles where k sin θ = M, θ = arcsin(M/k) (within 1e-6 relative)."""
+    stiffness, moment, transverse = 2e3, 30.0, 0.01  # N m/rad, N m, kg m²
+    body = SpatialBody("shaft", 1.0, (transverse, transverse, 0.02))
+    scene = SpatialScene("held", (body,), moments=(BodyMoment(0, (moment, 0.0, 0.0)),), axis_springs=(
+        AxisSpring(0, (0.0, 0.0, 1.0), stiffness, 2 * math.sqrt(stiffness * transverse)),))
+    series = ENGINES[engine](scene, 1e-4, 0.5, 0.05)
+    w = series.orientation[-1, 0]
+    axis = Rotation.from_quat([*w[1:], w[0]]).apply([0.0, 0.0, 1.0])
+    np.testing.assert_allclose(np.arccos(axis[2]), np.arcsin(moment / stiffness), rtol=1e-6)
