@@ -76,11 +76,39 @@ class SpatialBearing(NamedTuple):
     geometry: BearingGeometry
     epicyclic_cage_speed: float
 
-    def roller_loads(self, series, contact: int = INNER) -> np.ndarray:
-        """Each roller's load [N] on its ``contact`` (:data:`INNER` or :data:`OUTER` raceway) at the output instants
-        of ``series`` (a run of :attr:`scene`): the sum of its slice loads, (T, Z)."""
+    def slice_loads(self, series, contact: int = INNER) -> np.ndarray:
+        """Each roller's slice loads [N] on its ``contact`` (:data:`INNER` or :data:`OUTER` raceway) at the output
+        instants of ``series`` (a run of :attr:`scene`), (T, Z, slices): the load distribution along the rollers
+        (edge loading)."""
         rollers = self.geometry.rollers
-        return series.slice_loads[:, contact:CONTACTS_PER_ROLLER * rollers:CONTACTS_PER_ROLLER].sum(axis=2)
+        return series.slice_loads[:, contact:CONTACTS_PER_ROLLER * rollers:CONTACTS_PER_ROLLER]
+
+    def roller_loads(self, series, contact: int = INNER) -> np.ndarray:
+        """Each roller's load [N] on its ``contact``, the sum of its slice loads, (T, Z)."""
+        return self.slice_loads(series, contact).sum(axis=2)
+
+    def attitudes(self, series) -> tuple[np.ndarray, np.ndarray]:
+        """Each roller's (skew, tilt) [rad], (T, Z) each: its axis u against the bearing's axis z, turned towards the
+        tangent of its orbit (skew, atan2(u·e_t, u·z)) and towards the radius (tilt, atan2(u·e_r, u·z)), e_r and e_t
+        at its centre's azimuth."""
+        rollers = series.orientation[:, FIRST_ROLLER:]
+        w, x, y, z = (rollers[..., i] for i in range(4))
+        axis = np.stack([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)], axis=-1)  # R e₃
+        centres = series.position[:, FIRST_ROLLER:, :2]
+        psi = np.arctan2(centres[..., 1], centres[..., 0])
+        radial = axis[..., 0] * np.cos(psi) + axis[..., 1] * np.sin(psi)
+        tangential = -axis[..., 0] * np.sin(psi) + axis[..., 1] * np.cos(psi)
+        return np.arctan2(tangential, axis[..., 2]), np.arctan2(radial, axis[..., 2])
+
+    def cage_slip(self, series) -> np.ndarray:
+        """The cage's slip 1 − ω_c/ω_c,epicyclic at the output instants, (T,)."""
+        return 1.0 - series.angular_velocity[:, CAGE, 2] / self.epicyclic_cage_speed
+
+    def rib_loads(self, series) -> np.ndarray:
+        """Each roller's rib loads [N], (T, Z, 3): the outer ring's rib at +z, at −z, the inner ring's."""
+        rollers = self.geometry.rollers
+        outer = series.flange_loads[:, :2 * rollers].reshape(series.time.size, rollers, 2)
+        return np.concatenate([outer, series.flange_loads[:, 2 * rollers:, None]], axis=2)
 
 
 def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, end_radius: float = 0.5,
