@@ -4,7 +4,7 @@ what it was at the start.
 Reference: the conservation of energy, with the work of the loads and of the dampers and friction integrated by the
 engines (the reference engine with RK4's own stages, Exudyn by the trapezoid rule over its steps, as the planar
 engine does). Tolerances: the reference engine within 1e-5 of the energy that changes form (measured 1.6e-7 and
-6.5e-7), Exudyn's trapezoid within 1e-3 of it (measured 1.4e-5 and 3.6e-4). A wrong sign of any power, a missing
+4.0e-7), Exudyn's trapezoid within 1e-3 of it (measured 1.4e-5 and 2.7e-4). A wrong sign of any power, a missing
 friction or damping term, or stored energy left out breaks the balance by the energy that term moves (tens of per
 cent here).
 """
@@ -17,6 +17,7 @@ from scipy.spatial.transform import Rotation
 
 from bearing_mbs.contact.line_contact import slice_coefficient
 from bearing_mbs.core.spatial import (
+    BodyDrag,
     BodyForce,
     SlicedRaceway,
     SpatialBody,
@@ -35,12 +36,12 @@ INERTIA = (M * (3 * R**2 + L**2) / 12,) * 2 + (M * R**2 / 2,)
 ENGINES = {"reference": (simulate_spatial_reference, 1e-5), "exudyn": (simulate_spatial_exudyn, 1e-3)}
 
 
-def raceway(roller: int, ring: int, radius: float, side: str, friction: float) -> SlicedRaceway:
+def raceway(roller: int, ring: int, radius: float, side: str, friction: float, **planar_laws) -> SlicedRaceway:
     return SlicedRaceway(f"{side}", roller=roller, ring=ring, centre=(0, 0, 0), axis=(0, 0, 1), raceway_radius=radius,
                          side=side, roller_radius=R, positions=tuple(MODEL.slice_positions),
                          drops=tuple(MODEL.inner_drops), width=MODEL.slice_width, exponent=10 / 9,
                          coefficient=float(slice_coefficient(ROLLERS.inner_stiffness, L)), damping_time=5e-6,
-                         friction_coefficient=friction, regularisation_speed=1e-3)
+                         friction_coefficient=friction, regularisation_speed=1e-3, **planar_laws)
 
 
 def impact() -> SpatialScene:
@@ -56,12 +57,15 @@ def impact() -> SpatialScene:
 
 
 def set_down() -> SpatialScene:
-    """A spinning roller pushed onto a raceway by a constant force through a damped spring: the force supplies work,
-    friction and damping dissipate it and the spin's energy."""
+    """A spinning roller pushed onto a raceway by a constant force through a damped spring, with the planar laws'
+    hysteresis damping (latched per slice), rolling resistance and a lubricant's drag: the force supplies work, all
+    of them dissipate it and the spin's energy."""
     roller = SpatialBody("roller", M, INERTIA, position=(10.0 + R + 2e-6, 0, 0), angular_velocity=(0, 0, 30.0))
+    laws = {"damping_factor": 0.3, "approach_speed_floor": 1e-3, "rolling_resistance_arm": 2e-4}
     return SpatialScene("set down", (roller,), forces=(BodyForce(0, (-200.0, 0.0, 0.0)),),
                         springs=(TranslationSpring(0, (0, 0, 1), 1e7, 50.0),),
-                        raceways=(raceway(0, -1, 10.0, "inner", 0.1),))
+                        raceways=(raceway(0, -1, 10.0, "inner", 0.1, **laws),),
+                        drags=(BodyDrag(0, linear=2.0, quadratic=5.0, angular=1e-5, angular_quadratic=1e-6),))
 
 
 @pytest.mark.parametrize("engine", ENGINES)

@@ -17,14 +17,18 @@ carries
 .. math::
     Q_k = C_f\,w\,\Delta_k^{\,n-1}\,(\Delta_k + n\tau\dot\Delta_k) \ge 0,
 
-its elastic part Q_e = C_f w Δ_k^n storing C_f w Δ_k^(n+1)/(n+1) and the rest dissipating (Q_k − Q_e) Δ̇_k >= 0,
+with, where the contact has a damping factor d, the planar laws' hysteresis term d Δ̇_k/v_k added to the
+bracket's factor (v_k the slice's approach speed latched at its onset: :mod:`.normal`); its elastic part
+Q_e = C_f w Δ_k^n storing C_f w Δ_k^(n+1)/(n+1) and the rest dissipating (Q_k − Q_e) Δ̇_k >= 0,
 
 the slice law of document 003 (eqs. 14–16) with stiffness-proportional damping (τ [s]: the slice's tangent stiffness
 n C_f w Δ^(n−1) times τ), Δ̇_k = −s n_k·(ċ_k − v_ring(c_k)) from the roller's and the ring's rigid motions. The
 force s Q_k n_k acts on the roller at its surface point P_k = c_k − s r n_k, and its reaction on the ring there; its
 moment about the roller's centre is z_k R_b e₃ × s Q_k n_k (the part along n_k has no arm). The slice's friction
 opposes the sliding velocity v_s of the roller's material point at P_k against the ring's, in the tangent plane:
-F_T = −μ Q_k erf(2|v_s|/v_reg) v_s/|v_s| (the planar model's ``erf`` law, :mod:`.friction`, on the speed), at P_k.
+F_T = −μ Q_k erf(2|v_s|/v_reg) v_s/|v_s| (the planar model's ``erf`` law, :mod:`.friction`, on the speed), at P_k. A
+rolling-resistance arm μ_R adds the moment −μ_R Q_k erf(2 ω_rel r/v_reg) about the roller's axis against its spin
+relative to the ring, ω_rel = (ω_b − ω_g)·e₃ (the planar model's, :func:`.friction.rolling_resistance_moment`).
 """
 
 from __future__ import annotations
@@ -34,15 +38,20 @@ import math
 import numba
 
 from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
+from bearing_mbs.contact.friction import erf_sign, rolling_resistance_moment
 from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
+from bearing_mbs.contact.normal import hysteresis_factor, latch_approach_speed, reference_approach_speed
 
 
 @numba.njit(cache=True)
-def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment, slice_loads):
+def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment, slice_loads,
+                       latched, latch_next):
     """Add raceway contact ``contact``'s forces [N] and moments about the bodies' centres [N m], both in the world
     frame, to ``force`` and ``moment`` (bodies × 3), and its slice loads Q_k [N] into ``slice_loads[contact]``.
-    position, velocity (bodies × 3) [m, m/s], rotation (bodies × 3 × 3), omega_world (bodies × 3) [rad/s]. Returns
-    the power its damping and friction dissipate [W] and the energy its slices store [J]."""
+    position, velocity (bodies × 3) [m, m/s], rotation (bodies × 3 × 3), omega_world (bodies × 3) [rad/s];
+    latched (contacts × slices) [m/s]: the slices' approach speeds latched at their onsets, and ``latch_next`` the
+    values an accepted step at this state leaves (:func:`.normal.latch_approach_speed`). Returns the power its
+    damping, friction and rolling resistance dissipate [W] and the energy its slices store [J]."""
     b, g = packed.race_roller[contact], packed.race_ring[contact]
     s, radius, roller_radius = packed.race_side[contact], packed.race_radius[contact], packed.race_roller_radius[contact]
     plane = s == 0.0
@@ -51,6 +60,8 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
     coefficient = packed.race_coefficient[contact] * packed.race_width[contact]
     exponent, tau = packed.race_exponent[contact], packed.race_damping_time[contact]
     mu, regularisation = packed.race_friction[contact], packed.race_regularisation_speed[contact]
+    factor, floor = packed.race_damping_factor[contact], packed.race_approach_floor[contact]
+    arm = packed.race_rolling_arm[contact]
     # the raceway's axis in the world frame
     o0, o1, o2 = packed.race_centre[contact, 0], packed.race_centre[contact, 1], packed.race_centre[contact, 2]
     a0, a1, a2 = packed.race_axis[contact, 0], packed.race_axis[contact, 1], packed.race_axis[contact, 2]
@@ -69,6 +80,7 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         r0, r1, r2 = c0 - o0, c1 - o1, c2 - o2
         along = r0 * a0 + r1 * a1 + r2 * a2
         slice_loads[contact, k] = 0.0
+        latch_next[contact, k] = 0.0
         if plane:  # the distance from the plane, along its normal towards the roller
             interference = roller_radius - along - packed.race_drops[contact, k]
             n0, n1, n2 = a0, a1, a2
@@ -86,9 +98,21 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         u0, u1, u2, p0, p1, p2 = relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world)
         rate = -s * (n0 * u0 + n1 * u1 + n2 * u2)
         elastic = power_law_force(interference, coefficient, exponent)
-        load = max(elastic * (1.0 + exponent * tau * rate / interference), 0.0)
+        approach = reference_approach_speed(latched[contact, k], -rate, floor)
+        latch_next[contact, k] = latch_approach_speed(-interference, -rate, latched[contact, k], floor)
+        load = max(elastic * (hysteresis_factor(-rate, factor, approach) + exponent * tau * rate / interference), 0.0)
         slice_loads[contact, k] = load
         stored += power_law_energy(interference, coefficient, exponent)
         dissipated += (load - elastic) * rate + apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load,
                                                               u0, u1, u2, mu, regularisation, force, moment)
+        if arm > 0.0:  # about the roller's axis, against its spin relative to the ring
+            spin = omega_world[b, 0] * e0 + omega_world[b, 1] * e1 + omega_world[b, 2] * e2
+            if g >= 0:
+                spin -= omega_world[g, 0] * e0 + omega_world[g, 1] * e1 + omega_world[g, 2] * e2
+            resisting = rolling_resistance_moment(load, arm, erf_sign(spin * roller_radius, regularisation))
+            for j, e in enumerate((e0, e1, e2)):
+                moment[b, j] += resisting * e
+                if g >= 0:
+                    moment[g, j] -= resisting * e
+            dissipated -= resisting * spin
     return dissipated, stored

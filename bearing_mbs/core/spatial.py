@@ -126,9 +126,13 @@ class SlicedRaceway:
     z_k [m] along the roller's axis from its centre; drops: the summed crown drops h_k [m] >= 0 of roller and
     raceway there; width: the slice width w [m] > 0. A slice carries Q_k = C_f w Δ_k^(n−1) (Δ_k + n τ Δ̇_k) >= 0
     at interference Δ_k > 0: coefficient C_f [N/m^(n+1)] > 0, exponent n >= 1, damping_time τ [s] >= 0
-    (stiffness-proportional damping: the slice's tangent stiffness times τ). Each slice's friction opposes its
-    sliding velocity v_s in the tangent plane: μ Q_k erf(2|v_s|/v_reg), the planar model's ``erf`` law, with
-    friction_coefficient μ >= 0 and regularisation_speed v_reg [m/s] > 0.
+    (stiffness-proportional damping: the slice's tangent stiffness times τ); with damping_factor d >= 0 also the
+    planar model's hysteresis damping, the factor 1 + d Δ̇_k/v_k added, v_k the slice's approach speed latched at its
+    contact onset, at least approach_speed_floor [m/s] > 0 (Lankarani–Nikravesh's d for a restitution, as the
+    planar laws). Each slice's friction opposes its sliding velocity v_s in the tangent plane: μ Q_k erf(2|v_s|/v_reg),
+    the planar model's ``erf`` law, with friction_coefficient μ >= 0 and regularisation_speed v_reg [m/s] > 0; a
+    rolling_resistance_arm μ_R [m] >= 0 offsets each slice's load against the roller's spin relative to the ring,
+    the moment −μ_R Q_k erf(2 ω_rel r/v_reg) about the roller's axis (the planar model's rolling resistance).
     """
 
     name: str
@@ -147,6 +151,9 @@ class SlicedRaceway:
     damping_time: float = 0.0
     friction_coefficient: float = 0.0
     regularisation_speed: float = 1e-2
+    damping_factor: float = 0.0
+    approach_speed_floor: float = 0.1
+    rolling_resistance_arm: float = 0.0
 
     def __post_init__(self):
         owner = f"raceway contact {self.name!r}"
@@ -171,9 +178,12 @@ class SlicedRaceway:
         if not (self.exponent >= 1 and self.damping_time >= 0):
             raise ValueError(f"{owner}: exponent {self.exponent} must be >= 1 and damping_time {self.damping_time} s "
                              f">= 0")
-        if not (self.friction_coefficient >= 0 and self.regularisation_speed > 0):
-            raise ValueError(f"{owner}: friction_coefficient {self.friction_coefficient} must be >= 0 and "
-                             f"regularisation_speed {self.regularisation_speed} m/s > 0")
+        if not (self.friction_coefficient >= 0 and self.regularisation_speed > 0 and self.damping_factor >= 0
+                and self.approach_speed_floor > 0 and self.rolling_resistance_arm >= 0):
+            raise ValueError(f"{owner}: friction_coefficient {self.friction_coefficient}, damping_factor "
+                             f"{self.damping_factor} and rolling_resistance_arm {self.rolling_resistance_arm} m must "
+                             f"be >= 0, regularisation_speed {self.regularisation_speed} m/s and approach_speed_floor "
+                             f"{self.approach_speed_floor} m/s > 0")
 
 
 @dataclass(frozen=True)
@@ -265,10 +275,28 @@ class AxisSpring:
 
 
 @dataclass(frozen=True)
+class BodyDrag:
+    """The drag of a lubricant on body ``body`` (the planar model's): force −(linear + quadratic·|ṙ|) ṙ [N] on its
+    centre and moment −(angular + angular_quadratic·|ω₃|) ω₃ [N m] about its axis 3 against its spin ω₃; linear
+    [N s/m], quadratic [N s²/m²], angular [N m s/rad], angular_quadratic [N m s²/rad²], all >= 0."""
+
+    body: int
+    linear: float = 0.0
+    quadratic: float = 0.0
+    angular: float = 0.0
+    angular_quadratic: float = 0.0
+
+    def __post_init__(self):
+        if not min(self.linear, self.quadratic, self.angular, self.angular_quadratic) >= 0:
+            raise ValueError(f"drag on body {self.body}: its coefficients must be >= 0, got {self}")
+
+
+@dataclass(frozen=True)
 class SpatialScene:
     """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
     springs that hold a centre along a direction, sliced roller–raceway (and roller–pocket) contacts, roller
-    end–flange contacts, spin servos, springs that hold an axis, and gravity g [m/s²] in the world frame."""
+    end–flange contacts, spin servos, springs that hold an axis, lubricant drags, and gravity g [m/s²] in the
+    world frame."""
 
     name: str
     bodies: tuple[SpatialBody, ...]
@@ -279,6 +307,7 @@ class SpatialScene:
     flanges: tuple[FlangeContact, ...] = ()
     servos: tuple[SpinServo, ...] = ()
     axis_springs: tuple[AxisSpring, ...] = ()
+    drags: tuple[BodyDrag, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
@@ -288,7 +317,7 @@ class SpatialScene:
         object.__setattr__(self, "gravity", _vector(owner, "gravity", self.gravity, 3))
         count = len(self.bodies)
         for what, items in (("moment", self.moments), ("force", self.forces), ("spring", self.springs),
-                            ("servo", self.servos), ("axis spring", self.axis_springs)):
+                            ("servo", self.servos), ("axis spring", self.axis_springs), ("drag", self.drags)):
             for item in items:
                 if not 0 <= item.body < count:
                     raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
@@ -303,7 +332,7 @@ class SpatialScene:
     def has_forces(self) -> bool:
         """It has force elements beyond gravity (the engines' force kernel runs only then)."""
         return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges or self.servos
-                    or self.axis_springs)
+                    or self.axis_springs or self.drags)
 
     def packed(self) -> SpatialPacked:
         """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""
@@ -331,12 +360,15 @@ class SpatialScene:
             padded("positions"), padded("drops"), column(races, lambda c: c.width),
             column(races, lambda c: c.coefficient), column(races, lambda c: c.exponent),
             column(races, lambda c: c.damping_time), column(races, lambda c: c.friction_coefficient),
-            column(races, lambda c: c.regularisation_speed),
+            column(races, lambda c: c.regularisation_speed), column(races, lambda c: c.damping_factor),
+            column(races, lambda c: c.approach_speed_floor), column(races, lambda c: c.rolling_resistance_arm),
             *_flange_columns(self.flanges, column),
             column(self.servos, lambda d: d.body, int), column(self.servos, lambda d: d.axis, shape=(3,)),
             column(self.servos, lambda d: d.speed), column(self.servos, lambda d: d.gain),
             column(self.axis_springs, lambda a: a.body, int), column(self.axis_springs, lambda a: a.axis, shape=(3,)),
-            column(self.axis_springs, lambda a: a.stiffness), column(self.axis_springs, lambda a: a.damping))
+            column(self.axis_springs, lambda a: a.stiffness), column(self.axis_springs, lambda a: a.damping),
+            column(self.drags, lambda d: d.body, int),
+            column(self.drags, lambda d: (d.linear, d.quadratic, d.angular, d.angular_quadratic), shape=(4,)))
 
 
 def _flange_columns(flanges, column) -> tuple:
@@ -379,6 +411,9 @@ class SpatialPacked(NamedTuple):
     race_damping_time: np.ndarray
     race_friction: np.ndarray
     race_regularisation_speed: np.ndarray
+    race_damping_factor: np.ndarray
+    race_approach_floor: np.ndarray
+    race_rolling_arm: np.ndarray
     flange_roller: np.ndarray
     flange_ring: np.ndarray
     flange_sphere: np.ndarray
@@ -399,6 +434,8 @@ class SpatialPacked(NamedTuple):
     axis_direction: np.ndarray
     axis_stiffness: np.ndarray
     axis_damping: np.ndarray
+    drag_body: np.ndarray
+    drag: np.ndarray
 
 
 class SpatialSeries(NamedTuple):

@@ -4,6 +4,7 @@ moments, springs that hold a centre along a direction or an axis, spin servos, s
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numba
@@ -17,23 +18,35 @@ from bearing_mbs.core.rotations import rotation_from_vector
 class SpatialWork(NamedTuple):
     """What a force evaluation fills in: the bodies' rotations (N, 3, 3), the forces on them [N] (world frame) and
     the moments about their centres [N m] (body frame) (N, 3), the raceway contacts' slice loads (C, S) and the
-    flange contacts' loads (F,) [N]; and its scratch, the moments and angular velocities in the world frame (N, 3)."""
+    flange contacts' loads (F,) [N], and the slices' approach speeds an accepted step at this state would latch
+    (C, S) [m/s]; its scratch, the moments and angular velocities in the world frame (N, 3); and the state the
+    engines advance once per accepted step, the slices' latched approach speeds (C, S) [m/s]."""
 
     rotation: np.ndarray
     force: np.ndarray
     moment: np.ndarray
     slice_loads: np.ndarray
     flange_loads: np.ndarray
+    latch_next: np.ndarray
     moment_world: np.ndarray
     omega_world: np.ndarray
+    latched: np.ndarray
 
 
 def new_work(bodies: int, packed) -> SpatialWork:
     """The :class:`SpatialWork` of ``bodies`` bodies and the contacts of ``packed``
     (:class:`bearing_mbs.core.spatial.SpatialPacked`)."""
-    return SpatialWork(np.empty((bodies, 3, 3)), np.empty((bodies, 3)), np.empty((bodies, 3)),
-                       np.zeros(packed.race_positions.shape), np.zeros(packed.flange_roller.size),
-                       np.empty((bodies, 3)), np.empty((bodies, 3)))
+    slices = packed.race_positions.shape
+    return SpatialWork(np.empty((bodies, 3, 3)), np.empty((bodies, 3)), np.empty((bodies, 3)), np.zeros(slices),
+                       np.zeros(packed.flange_roller.size), np.zeros(slices), np.empty((bodies, 3)),
+                       np.empty((bodies, 3)), np.zeros(slices))
+
+
+@numba.njit(cache=True)
+def latch(work):
+    """Advance the latched approach speeds to those of the last evaluation (once per accepted step, after an
+    evaluation at the accepted state: as the planar engines advance their pairs' state)."""
+    work.latched[:] = work.latch_next
 
 
 @numba.njit(cache=True)
@@ -90,9 +103,20 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         moment_world[b, 2] += stiffness * (e0 * a[1] - e1 * a[0]) - damping * p2
         stored += stiffness * (1.0 - (e0 * a[0] + e1 * a[1] + e2 * a[2]))  # the potential of k (e₃ × a)
         dissipated += damping * (p0 * p0 + p1 * p1 + p2 * p2)
+    for k in range(packed.drag_body.size):  # the lubricant's drag: on the centre, and about the body's axis
+        b = packed.drag_body[k]
+        linear, quadratic, angular, angular_quadratic = (packed.drag[k, 0], packed.drag[k, 1], packed.drag[k, 2],
+                                                         packed.drag[k, 3])
+        speed = math.sqrt(velocity[b, 0] ** 2 + velocity[b, 1] ** 2 + velocity[b, 2] ** 2)
+        resistance = linear + quadratic * speed
+        for j in range(3):
+            force[b, j] -= resistance * velocity[b, j]
+        spin = omega_body[b, 2]
+        work.moment[b, 2] -= (angular + angular_quadratic * abs(spin)) * spin
+        dissipated += resistance * speed * speed + (angular + angular_quadratic * abs(spin)) * spin * spin
     for contact in range(packed.race_roller.size):
         lost, kept = add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force,
-                                        moment_world, work.slice_loads)
+                                        moment_world, work.slice_loads, work.latched, work.latch_next)
         dissipated, stored = dissipated + lost, stored + kept
     for contact in range(packed.flange_roller.size):
         lost, kept = add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment_world,

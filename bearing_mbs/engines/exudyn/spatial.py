@@ -26,7 +26,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
-from bearing_mbs.elements.spatial import new_work, spatial_generalized_forces
+from bearing_mbs.elements.spatial import latch, new_work, spatial_generalized_forces
 from bearing_mbs.engines.diagnosis import output_grid
 from bearing_mbs.spec import methods
 
@@ -178,6 +178,7 @@ class _Recorder:
             self.message = nonfinite_message(self.scene, finite, self.rows[-1][4], t, self.step)
             return False
         self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())
+        latch(self.forces.work)  # the contacts' latched approach speeds, once per accepted step
         power = np.array(self.forces.powers[:2])
         self.work += 0.5 * (t - self.last_time) * (self.power + power)
         self.power, self.last_time = power, t

@@ -25,7 +25,7 @@ import numpy as np
 
 from bearing_mbs.core.rotations import rotation_from_quaternion
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
-from bearing_mbs.elements.spatial import new_work, spatial_forces
+from bearing_mbs.elements.spatial import latch, new_work, spatial_forces
 from bearing_mbs.engines.diagnosis import output_grid
 from bearing_mbs.engines.reference.integrators import equal_steps
 from bearing_mbs.engines.reference.tableaus import RK4
@@ -86,6 +86,8 @@ def spatial_runge_kutta(y, energy, bodies, packed, work, span, step, a, b):
                 if a[i, j] != 0.0:
                     stage += h * a[i, j] * stages[j]
             powers[i, 0], powers[i, 1], _ = spatial_rates(stage, bodies, packed, work, stages[i])
+            if i == 0:  # at the accepted state: the contacts' latched approach speeds advance (elements.spatial)
+                latch(work)
         for i in range(b.size):
             y += h * b[i] * stages[i]
             energy[0] += h * b[i] * powers[i, 0]

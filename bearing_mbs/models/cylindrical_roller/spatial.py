@@ -21,13 +21,14 @@ radial plane the planar model's (x, y).
   height.
 * The inner ring: driven about the bearing's axis by a spin servo of the planar model's gain (the ring's inertia over
   ``drive.servo_time_constant``), the radial load at its angle, a stiff axial spring (the shaft's location).
-* Contacts are damped in proportion to their stiffness (``damping_time``), not by the planar model's restitution
-  laws: the three-dimensional contacts have no latched approach speed yet. With the planar model's ``power`` law and
-  ``damping_time = 0`` the two models are the same bearing, and an aligned run reproduces the planar one
+* The contacts carry the groups' hysteresis damping (Lankarani–Nikravesh and its family, with an approach speed
+  latched per slice), their friction and rolling resistance; ``damping_time`` adds stiffness-proportional damping
+  (0 keeps the planar laws alone). The lubricant's drags on the rollers (and, churning, on the cage) are the planar
+  model's. Aligned, the two models are the same bearing, and a run reproduces the planar one
   (tests/test_spatial_bearing.py).
 
-Not yet in three dimensions (refused here with the field that asks for them): EHL traction, rolling resistance,
-lubricant drags and films, the constraint and full-complement cages, the gear train, load and speed profiles.
+Not yet in three dimensions (refused here with the field that asks for them): EHL traction, the land and pocket
+films, the constraint and full-complement cages, the gear train, load and speed profiles.
 """
 
 from __future__ import annotations
@@ -42,6 +43,7 @@ from bearing_mbs.contact.line_contact import reduced_modulus, slice_coefficient
 from bearing_mbs.contact.point_contact import hertz_stiffness
 from bearing_mbs.core.spatial import (
     AxisSpring,
+    BodyDrag,
     BodyForce,
     FlangeContact,
     SlicedRaceway,
@@ -51,9 +53,10 @@ from bearing_mbs.core.spatial import (
     TranslationSpring,
 )
 from bearing_mbs.core.topology import Group
-from bearing_mbs.models.cylindrical_roller.build import group_law
+from bearing_mbs.models.cylindrical_roller.build import cage_drag, group_law, roller_drag
 from bearing_mbs.models.cylindrical_roller.drivetrain import initial_speed
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.operating_oil import operating_oil
 from bearing_mbs.spec.fields import SpecError
 
 INNER_RING, CAGE, FIRST_ROLLER = 0, 1, 2
@@ -132,6 +135,7 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
                         "axial_play >= 0 m, misalignment finite and axial_load >= 0 N")
     geometry = BearingGeometry.from_spec(spec.bearing)
     geometry.require_cage(spec.bearing)
+    oil = operating_oil(spec.lubricant)
     speed = initial_speed(spec.drive)
     rolling = spec.drive.initial_state == "rolling"
     cage_speed = geometry.epicyclic_cage_speed(speed) if rolling else 0.0
@@ -168,8 +172,12 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
         AXIAL_STIFFNESS * bodies[body].mass)) for body in held)
     transverse = bodies[INNER_RING].inertia[0]
     shaft = AxisSpring(INNER_RING, axis, SHAFT_TILT_STIFFNESS, 2 * math.sqrt(SHAFT_TILT_STIFFNESS * transverse))
+    drags = tuple(BodyDrag(FIRST_ROLLER + k, **_drag(coefficients)) for k in range(geometry.rollers)
+                  for coefficients in (roller_drag(spec, geometry, oil),) if coefficients)
+    if spec.lubricant.model == "churning":
+        drags += (BodyDrag(CAGE, angular_quadratic=cage_drag(spec, geometry, oil)),)
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
-                         raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,),
+                         raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,), drags=drags,
                          gravity=(0.0, -spec.scenario.gravity, 0.0))
     return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed))
 
@@ -180,7 +188,9 @@ def _check_supported(spec) -> None:
                 ("drive.kind", spec.drive.kind, spec.drive.kind == "speed", "a speed drive only"),
                 ("drive.profile", spec.drive.profile, spec.drive.profile == "constant", "a constant speed only"),
                 ("load.profile", spec.load.profile, spec.load.profile == "constant", "a constant load only"),
-                ("lubricant.model", spec.lubricant.model, spec.lubricant.model == "none", "no lubricant drags"))
+                ("lubricant.land_film", spec.lubricant.land_film, not spec.lubricant.land_film, "no land film"),
+                ("lubricant.pocket_film", spec.lubricant.pocket_film, not spec.lubricant.pocket_film,
+                 "no pocket films"))
     for field, value, supported, allowed in refusals:
         if not supported:
             raise SpecError(field, value, f"the three-dimensional bearing models {allowed} so far (docs/spatial.md)")
@@ -189,9 +199,11 @@ def _check_supported(spec) -> None:
         if contact.friction_law not in ("erf", "none"):
             raise SpecError(f"contact.{group}.friction_law", contact.friction_law,
                             "the three-dimensional contacts have the erf law (or none) so far (docs/spatial.md)")
-        if contact.rolling_resistance_arm > 0:
-            raise SpecError(f"contact.{group}.rolling_resistance_arm", contact.rolling_resistance_arm,
-                            "the three-dimensional contacts have no rolling resistance so far: 0 (docs/spatial.md)")
+
+
+def _drag(coefficients: dict) -> dict:
+    """The planar model's drag coefficients (:func:`.build.roller_drag`) as a :class:`BodyDrag`'s."""
+    return {name: coefficients.get(name, 0.0) for name in ("linear", "quadratic", "angular", "angular_quadratic")}
 
 
 def _ring(name: str, mass: float, polar: float, width: float, speed: float,
@@ -204,11 +216,14 @@ def _ring(name: str, mass: float, polar: float, width: float, speed: float,
 
 
 def _law(spec, geometry: BearingGeometry, group: str, length: float) -> dict:
-    """A group's law as a sliced contact's: the whole line's Q = K δ^n over ``length`` [m], its dry friction."""
+    """A group's law as a sliced contact's: the whole line's Q = K δ^n over ``length`` [m] with its hysteresis
+    damping, its dry friction and rolling resistance."""
     pair = group_law(spec, geometry, group)
     friction = pair.friction_coefficient if pair.friction_law != "none" else 0.0
     return {"coefficient": float(slice_coefficient(pair.stiffness, length)), "exponent": pair.exponent,
-            "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed}
+            "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed,
+            "damping_factor": pair.damping_factor, "approach_speed_floor": pair.approach_speed_floor,
+            "rolling_resistance_arm": pair.rolling_resistance_arm}
 
 
 def _slices(length: float, slices: int, damping_time: float, crown=None) -> dict:
