@@ -20,6 +20,8 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 from scipy.special import ellipj
 
+from bearing_mbs.core.interrupt import StopRequest
+from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.spatial import BodyMoment, SpatialBody, SpatialScene
 from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
 from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
@@ -188,3 +190,31 @@ def test_a_diverging_run_stops_with_the_body_and_keeps_what_it_computed(engine):
     assert "'wild'" in series.message
     assert 1 <= series.time.size < 101
     assert np.isfinite(series.angular_velocity).all()
+
+
+class _StopHalfway(ProgressMeter):
+    """A meter that asks the run to stop once it has passed half its span (as Ctrl-C would), counting updates."""
+
+    def __init__(self, stop: StopRequest):
+        super().__init__()
+        self.stop, self.updates, self.total = stop, 0, 0.0
+
+    def start(self, total: float, description: str = "") -> None:
+        self.total = total
+
+    def update(self, value: float) -> None:
+        self.updates += 1
+        if value >= 0.5 * self.total:
+            self.stop.set()
+
+
+@pytest.mark.parametrize("engine", [simulate_spatial_reference, simulate_spatial_exudyn])
+def test_a_stop_request_ends_the_run_and_keeps_its_output(engine):
+    stop = StopRequest()
+    meter = _StopHalfway(stop)
+    series = engine(top_scene(), 1e-3, END, 0.1, progress=meter, stop=stop)
+    assert not series.success
+    assert meter.updates >= 10  # the run reported its progress at its output instants
+    np.testing.assert_allclose(series.time[-1], 0.5 * END, rtol=1e-9)  # stopped where asked, the instants kept
+    assert series.time.size == 11 and np.isfinite(series.angular_velocity).all()
+    assert series.wall_time_s > 0

@@ -445,7 +445,8 @@ class SpatialSeries(NamedTuple):
     flange_loads (T, F) [N]: each flange contact's load; work (T, 2) [J]: the work the loads supplied and the work
     the dampers and friction dissipated since t = 0; stored (T,) [J]: the energy the springs and contacts store; the
     steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
-    last good output instant)."""
+    last good output instant: a state no longer finite, or a stop request); wall_time_s: the stepping's wall time
+    [s]."""
 
     time: np.ndarray
     position: np.ndarray
@@ -458,10 +459,16 @@ class SpatialSeries(NamedTuple):
     stored: np.ndarray
     steps: int
     message: str = ""
+    wall_time_s: float = 0.0
 
     @property
     def success(self) -> bool:
         return not self.message
+
+
+def stopped_message(t: float) -> str:
+    """Why a run that a stop request (Ctrl-C, SIGTERM, code) ended stopped at t [s]."""
+    return f"t = {t:.6g} s: stopped on request; the output up to here is kept"
 
 
 class EnergyAudit(NamedTuple):

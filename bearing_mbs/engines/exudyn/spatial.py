@@ -25,9 +25,12 @@ import math
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
+from bearing_mbs.core.interrupt import StopRequest
+from bearing_mbs.core.progress import ProgressMeter
+from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message, stopped_message
 from bearing_mbs.elements.spatial import latch, new_work, spatial_generalized_forces
 from bearing_mbs.engines.diagnosis import output_grid
+from bearing_mbs.engines.run import progress_meter, stop_request, timed_run
 from bearing_mbs.spec import methods
 
 #: The methods that run spatial scenes (Exudyn's solver of each: ``Method.exudyn``).
@@ -36,10 +39,13 @@ SPATIAL_METHODS = (methods.RK4, methods.GENERALIZED_ALPHA)
 
 def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, output_interval: float,
                             method: methods.Method = methods.RK4, spectral_radius: float = 0.9,
-                            newton_tolerance: float = 1e-10) -> SpatialSeries:
+                            newton_tolerance: float = 1e-10, progress: ProgressMeter | None = None,
+                            stop: StopRequest | None = None) -> SpatialSeries:
     """Run the free bodies of ``scene`` from 0 to ``end_time`` [s] with Exudyn's ``method`` in equal steps of at most
     ``step`` [s], output at the first step on or after each output instant (every ``output_interval`` [s]; the
-    series holds the times of the steps, which are the instants when the step divides the interval)."""
+    series holds the times of the steps, which are the instants when the step divides the interval); ``progress`` is
+    updated and ``stop`` looked at at every output instant (a set request ends the run there, keeping the
+    output)."""
     import exudyn as exu
 
     check_times(step, end_time, output_interval)
@@ -50,7 +56,8 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
     container = exu.SystemContainer()
     mbs = container.AddSystem()
     nodes, forces = _add_bodies(mbs, scene)
-    recorder = _Recorder(mbs, exu, nodes, times, scene, step, forces)
+    progress, stop = progress_meter(progress), stop_request(stop)
+    recorder = _Recorder(mbs, exu, nodes, times, scene, step, forces, progress, stop)
     mbs.SetPostStepUserFunction(recorder)
     mbs.Assemble()
     recorder.record(0.0, np.array([body.orientation for body in scene.bodies]))  # the initial state
@@ -65,19 +72,21 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
     ti.generalizedAlpha.spectralRadius = spectral_radius
     ti.newton.relativeTolerance = newton_tolerance
     ti.newton.absoluteTolerance = newton_tolerance
-    try:
-        with contextlib.redirect_stdout(io.StringIO()):  # Exudyn's console notes (its warning on the allocations of
-            # the Python force function each step, which is how user functions work)
-            solved, detail = mbs.SolveDynamic(settings, solverType=getattr(exu.DynamicSolverType, method.exudyn)), ""
-    except Exception as error:  # noqa: BLE001 (Exudyn raises when a solver gives up)
-        solved, detail = False, str(error)
+    with timed_run(progress, end_time, f"{scene.name} (exudyn {method.name}, three dimensions)") as clock:
+        try:
+            with contextlib.redirect_stdout(io.StringIO()):  # Exudyn's console notes (its warning on the allocations
+                # of the Python force function each step, which is how user functions work)
+                solved = mbs.SolveDynamic(settings, solverType=getattr(exu.DynamicSolverType, method.exudyn))
+            detail = ""
+        except Exception as error:  # noqa: BLE001 (Exudyn raises when a solver gives up)
+            solved, detail = False, str(error)
     steps = int(mbs.sys["dynamicSolver"].it.currentStepIndex) - 1
     series = recorder.series()
     message = recorder.message
     if not solved and not message:
         message = (f"t = {recorder.time:.6g} s: Exudyn's {method.name} stopped ({detail or 'no message'}). Likely fix: a "
                    f"smaller step than {step:.3g} s")
-    return SpatialSeries(*series, steps, message)
+    return SpatialSeries(*series, steps, message, clock.wall_time_s)
 
 
 def _add_bodies(mbs, scene: SpatialScene) -> tuple[list, _Forces]:
@@ -140,8 +149,10 @@ class _Recorder:
     """PostStepUserFunction: a finite state after every step, the work (trapezoid rule over the accepted steps, as
     the planar engine integrates it), the bodies' states at the output instants."""
 
-    def __init__(self, mbs, exu, nodes: list, times: np.ndarray, scene: SpatialScene, step: float, forces: _Forces):
+    def __init__(self, mbs, exu, nodes: list, times: np.ndarray, scene: SpatialScene, step: float, forces: _Forces,
+                 progress: ProgressMeter, stop: StopRequest):
         self.mbs, self.nodes, self.times, self.scene, self.step, self.forces = mbs, nodes, times, scene, step, forces
+        self.progress, self.stop = progress, stop
         self.time, self.message = 0.0, ""
         kinds = exu.OutputVariableType
         self.kinds = (kinds.Position, kinds.Velocity, kinds.RotationMatrix, kinds.AngularVelocityLocal)
@@ -184,6 +195,10 @@ class _Recorder:
         self.power, self.last_time = power, t
         if len(self.rows) < self.times.size and t >= self.times[len(self.rows)] - self.margin:
             self.record(t)
+            self.progress.update(t)
+            if self.stop.is_set() and len(self.rows) < self.times.size:
+                self.message = stopped_message(t)
+                return False
         return True
 
     def series(self) -> tuple[np.ndarray, ...]:

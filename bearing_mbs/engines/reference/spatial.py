@@ -23,12 +23,15 @@ from typing import NamedTuple
 import numba
 import numpy as np
 
+from bearing_mbs.core.interrupt import StopRequest
+from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.rotations import rotation_from_quaternion
-from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message
+from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message, stopped_message
 from bearing_mbs.elements.spatial import latch, new_work, spatial_forces
 from bearing_mbs.engines.diagnosis import output_grid
 from bearing_mbs.engines.reference.integrators import equal_steps
 from bearing_mbs.engines.reference.tableaus import RK4
+from bearing_mbs.engines.run import progress_meter, stop_request, timed_run
 
 #: The columns of a body's state: r (3), p (4), ṙ (3), ω (3).
 POSITION, ORIENTATION, VELOCITY, ANGULAR_VELOCITY, STATE_SIZE = 0, 3, 7, 10, 13
@@ -99,10 +102,11 @@ def spatial_runge_kutta(y, energy, bodies, packed, work, span, step, a, b):
     return steps
 
 
-def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float,
-                               output_interval: float) -> SpatialSeries:
+def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float, output_interval: float,
+                               progress: ProgressMeter | None = None, stop: StopRequest | None = None) -> SpatialSeries:
     """Run ``scene`` from 0 to ``end_time`` [s] with RK4 steps of at most ``step`` [s] (equal steps within each output
-    interval), output every ``output_interval`` [s]."""
+    interval), output every ``output_interval`` [s]; ``progress`` is updated and ``stop`` looked at at every output
+    instant (a set request ends the run there, keeping the output)."""
     check_times(step, end_time, output_interval)
     times = output_grid(end_time, output_interval)
     y = np.array([[*b.position, *b.orientation, *b.velocity, *b.angular_velocity] for b in scene.bodies])
@@ -114,16 +118,23 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     flange_loads = np.empty((times.size, packed.flange_roller.size))
     works, stored = np.empty((times.size, 2)), np.empty(times.size)
     steps, message, reached = 0, "", times.size
-    for k in range(times.size):
-        if k > 0:
-            steps += spatial_runge_kutta(y, energy, bodies, packed, work, times[k] - times[k - 1], step, RK4.a, RK4.b)
-        if not np.isfinite(y).all():
-            message, reached = nonfinite_message(scene, np.isfinite(y).all(axis=1), states[k - 1, :, ANGULAR_VELOCITY:],
-                                                 times[k], step), k
-            break
-        *_, stored[k] = spatial_rates(y, bodies, packed, work, rates)  # the contact loads of this instant
-        states[k], loads[k], flange_loads[k], works[k] = y, work.slice_loads, work.flange_loads, energy
+    progress, stop = progress_meter(progress), stop_request(stop)
+    with timed_run(progress, end_time, f"{scene.name} (reference rk4, three dimensions)") as clock:
+        for k in range(times.size):
+            if k > 0:
+                steps += spatial_runge_kutta(y, energy, bodies, packed, work, times[k] - times[k - 1], step, RK4.a,
+                                             RK4.b)
+            if not np.isfinite(y).all():
+                message, reached = nonfinite_message(scene, np.isfinite(y).all(axis=1),
+                                                     states[k - 1, :, ANGULAR_VELOCITY:], times[k], step), k
+                break
+            *_, stored[k] = spatial_rates(y, bodies, packed, work, rates)  # the contact loads of this instant
+            states[k], loads[k], flange_loads[k], works[k] = y, work.slice_loads, work.flange_loads, energy
+            progress.update(times[k])
+            if stop.is_set() and k + 1 < times.size:
+                message, reached = stopped_message(times[k]), k + 1
+                break
     states = states[:reached]
     return SpatialSeries(times[:reached], states[:, :, POSITION:ORIENTATION], states[:, :, ORIENTATION:VELOCITY],
                          states[:, :, VELOCITY:ANGULAR_VELOCITY], states[:, :, ANGULAR_VELOCITY:], loads[:reached],
-                         flange_loads[:reached], works[:reached], stored[:reached], steps, message)
+                         flange_loads[:reached], works[:reached], stored[:reached], steps, message, clock.wall_time_s)

@@ -143,8 +143,11 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
 
     tilt = (math.sin(misalignment / 2), 0.0, 0.0)  # the inner ring turned about x: its quaternion's vector part
     axis = (0.0, -math.sin(misalignment), math.cos(misalignment))  # its axis in the world frame
+    # under an axial load the rollers start seated against the outer ring's rib at +z and the inner ring against them:
+    # the load goes through the ribs from the start instead of dragging the rollers across the play by friction
+    seated = axial_play / 2 if axial_load > 0 else 0.0
     bodies = [_ring("inner_ring", geometry.inner_ring_mass, geometry.inner_ring_inertia, spec.bearing.ring_width,
-                    speed, orientation=(math.cos(misalignment / 2), *tilt)),
+                    speed, orientation=(math.cos(misalignment / 2), *tilt), position=(0.0, 0.0, 2 * seated)),
               _ring("cage", geometry.cage_mass, geometry.cage_inertia, spec.bearing.cage_width, cage_speed)]
     r, length, mass = geometry.roller_diameter / 2, geometry.roller_length, geometry.roller_mass
     transverse = mass * (3 * r**2 + length**2) / 12
@@ -152,7 +155,7 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, en
     for k, psi in enumerate(geometry.roller_angles):
         x, y = pitch_radius * math.cos(psi), pitch_radius * math.sin(psi)
         bodies.append(SpatialBody(f"roller{k}", mass, (transverse, transverse, geometry.roller_inertia),
-                                  position=(x, y, 0.0), velocity=(-cage_speed * y, cage_speed * x, 0.0),
+                                  position=(x, y, seated), velocity=(-cage_speed * y, cage_speed * x, 0.0),
                                   angular_velocity=(0.0, 0.0, spin)))
 
     raceways = tuple(contact for k in range(geometry.rollers)
@@ -207,11 +210,11 @@ def _drag(coefficients: dict) -> dict:
 
 
 def _ring(name: str, mass: float, polar: float, width: float, speed: float,
-          orientation=(1.0, 0.0, 0.0, 0.0)) -> SpatialBody:
+          orientation=(1.0, 0.0, 0.0, 0.0), position=(0.0, 0.0, 0.0)) -> SpatialBody:
     """A ring of polar moment ``polar`` [kg m²] and axial ``width`` [m], spinning at ``speed`` [rad/s] about its axis:
     its transverse moment, that of a thin-walled annulus about a diameter, polar/2 + m w²/12."""
     transverse = polar / 2 + mass * width**2 / 12
-    return SpatialBody(name, mass, (transverse, transverse, polar), orientation=orientation,
+    return SpatialBody(name, mass, (transverse, transverse, polar), position=position, orientation=orientation,
                        angular_velocity=(0.0, 0.0, speed))
 
 
