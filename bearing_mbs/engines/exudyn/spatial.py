@@ -41,7 +41,7 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
                             method: methods.Method = methods.RK4, spectral_radius: float = 0.9,
                             newton_tolerance: float = 1e-10, progress: ProgressMeter | None = None,
                             stop: StopRequest | None = None) -> SpatialSeries:
-    """Run the free bodies of ``scene`` from 0 to ``end_time`` [s] with Exudyn's ``method`` in equal steps of at most
+    """Run ``scene`` from 0 to ``end_time`` [s] with Exudyn's ``method`` in equal steps of at most
     ``step`` [s], output at the first step on or after each output instant (every ``output_interval`` [s]; the
     series holds the times of the steps, which are the instants when the step divides the interval); ``progress`` is
     updated and ``stop`` looked at at every output instant (a set request ends the run there, keeping the

@@ -38,6 +38,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
 from bearing_mbs.contact.line_contact import reduced_modulus, slice_coefficient
 from bearing_mbs.contact.point_contact import hertz_stiffness
@@ -94,9 +95,10 @@ class SpatialBearing(NamedTuple):
         """Each roller's (skew, tilt) [rad], (T, Z) each: its axis u against the bearing's axis z, turned towards the
         tangent of its orbit (skew, atan2(u·e_t, u·z)) and towards the radius (tilt, atan2(u·e_r, u·z)), e_r and e_t
         at its centre's azimuth."""
-        rollers = series.orientation[:, FIRST_ROLLER:]
-        w, x, y, z = (rollers[..., i] for i in range(4))
-        axis = np.stack([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)], axis=-1)  # R e₃
+        quaternions = series.orientation[:, FIRST_ROLLER:]
+        shape = quaternions.shape[:2]
+        scalar_last = np.roll(quaternions, -1, axis=-1).reshape(-1, 4)
+        axis = Rotation.from_quat(scalar_last).apply([0.0, 0.0, 1.0]).reshape(*shape, 3)  # R e₃
         centres = series.position[:, FIRST_ROLLER:, :2]
         psi = np.arctan2(centres[..., 1], centres[..., 0])
         radial = axis[..., 0] * np.cos(psi) + axis[..., 1] * np.sin(psi)
@@ -114,11 +116,12 @@ class SpatialBearing(NamedTuple):
         return np.concatenate([outer, series.flange_loads[:, 2 * rollers:, None]], axis=2)
 
 
-def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 2e-6, end_radius: float = 0.5,
+def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end_radius: float = 0.5,
                           rib_height: float = 0.6, axial_play: float = 2e-4, misalignment: float = 0.0,
                           axial_load: float = 0.0, crown=None) -> SpatialBearing:
     """The bearing of ``spec`` (this model's :class:`~.spec.Spec`) in three dimensions (the module's docstring):
-    ``slices`` per roller contact (integer >= 1), ``damping_time`` τ [s] >= 0 of every contact, the rollers' end
+    ``slices`` per roller contact (integer >= 1), ``damping_time`` τ [s] >= 0 of every contact (stiffness-proportional
+    damping on top of the groups' laws; 0: their laws alone, the planar model's), the rollers' end
     spheres' radius ``end_radius`` × D_pw > 0, the ribs' height ``rib_height`` × D_w in (0.5, 1) (flat ribs meet a
     spherical end on the roller's axis, so they must reach the pitch circle), the rollers' total
     axial play between the ribs ``axial_play`` [m] >= 0; the inner ring's ``misalignment`` [rad], its axis tilted
