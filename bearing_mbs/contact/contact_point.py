@@ -1,5 +1,6 @@
-"""A contact point between a roller and a ring in three dimensions (compiled): the relative velocity of the two
-bodies' material points there, and the normal and friction forces applied at it, with their reactions. Shared by
+"""A contact point between a roller and a ring in three dimensions (compiled): the ring's features in the world
+frame, the relative velocity of the two bodies' material points there, and the normal and friction forces applied
+at it, with their reactions. Shared by
 the sliced raceway contact (:mod:`.sliced_raceway`) and the flange contact (:mod:`.flange`).
 
 Arms and velocities are in the world frame: l = P − r_b from the roller's centre, p = P − r_g from the ring's
@@ -21,6 +22,21 @@ def cross_add(a0, a1, a2, b0, b1, b2, out, row, factor):
     out[row, 0] += factor * (a1 * b2 - a2 * b1)
     out[row, 1] += factor * (a2 * b0 - a0 * b2)
     out[row, 2] += factor * (a0 * b1 - a1 * b0)
+
+
+@numba.njit(cache=True, inline="always")
+def in_world(g, position, rotation, point, direction):
+    """A point [m] and a direction given in ring g's frame (the world's for the ground, g = −1) in the world frame:
+    (p0, p1, p2, d0, d1, d2)."""
+    p0, p1, p2, d0, d1, d2 = point[0], point[1], point[2], direction[0], direction[1], direction[2]
+    if g < 0:
+        return p0, p1, p2, d0, d1, d2
+    r = rotation[g]
+    return (position[g, 0] + r[0, 0] * p0 + r[0, 1] * p1 + r[0, 2] * p2,
+            position[g, 1] + r[1, 0] * p0 + r[1, 1] * p1 + r[1, 2] * p2,
+            position[g, 2] + r[2, 0] * p0 + r[2, 1] * p1 + r[2, 2] * p2,
+            r[0, 0] * d0 + r[0, 1] * d1 + r[0, 2] * d2, r[1, 0] * d0 + r[1, 1] * d1 + r[1, 2] * d2,
+            r[2, 0] * d0 + r[2, 1] * d1 + r[2, 2] * d2)
 
 
 @numba.njit(cache=True, inline="always")

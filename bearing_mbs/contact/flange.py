@@ -17,7 +17,7 @@ import math
 
 import numba
 
-from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
+from bearing_mbs.contact.contact_point import apply_contact, in_world, relative_velocity
 from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 
 
@@ -28,15 +28,8 @@ def add_flange(packed, contact, position, rotation, velocity, omega_world, force
     :func:`bearing_mbs.contact.sliced_raceway.add_sliced_raceway` takes it; returns the power it dissipates [W] and
     the energy it stores [J], as that function does."""
     b, g = packed.flange_roller[contact], packed.flange_ring[contact]
-    o0, o1, o2 = packed.flange_point[contact, 0], packed.flange_point[contact, 1], packed.flange_point[contact, 2]
-    a0, a1, a2 = packed.flange_normal[contact, 0], packed.flange_normal[contact, 1], packed.flange_normal[contact, 2]
-    if g >= 0:
-        rg = rotation[g]
-        o0, o1, o2 = (position[g, 0] + rg[0, 0] * o0 + rg[0, 1] * o1 + rg[0, 2] * o2,
-                      position[g, 1] + rg[1, 0] * o0 + rg[1, 1] * o1 + rg[1, 2] * o2,
-                      position[g, 2] + rg[2, 0] * o0 + rg[2, 1] * o1 + rg[2, 2] * o2)
-        a0, a1, a2 = (rg[0, 0] * a0 + rg[0, 1] * a1 + rg[0, 2] * a2, rg[1, 0] * a0 + rg[1, 1] * a1 + rg[1, 2] * a2,
-                      rg[2, 0] * a0 + rg[2, 1] * a1 + rg[2, 2] * a2)
+    o0, o1, o2, a0, a1, a2 = in_world(g, position, rotation, packed.flange_point[contact],
+                                      packed.flange_normal[contact])
     flange_loads[contact] = 0.0
     z, radius = packed.flange_sphere[contact], packed.flange_end_radius[contact]
     # the arm of the sphere's point P nearest the flange, from the roller's centre

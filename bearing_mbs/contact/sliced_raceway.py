@@ -37,7 +37,7 @@ import math
 
 import numba
 
-from bearing_mbs.contact.contact_point import apply_contact, relative_velocity
+from bearing_mbs.contact.contact_point import apply_contact, in_world, relative_velocity
 from bearing_mbs.contact.friction import erf_sign, rolling_resistance_moment
 from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 from bearing_mbs.contact.normal import hysteresis_factor, latch_approach_speed, reference_approach_speed
@@ -63,15 +63,7 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
     factor, floor = packed.race_damping_factor[contact], packed.race_approach_floor[contact]
     arm = packed.race_rolling_arm[contact]
     # the raceway's axis in the world frame
-    o0, o1, o2 = packed.race_centre[contact, 0], packed.race_centre[contact, 1], packed.race_centre[contact, 2]
-    a0, a1, a2 = packed.race_axis[contact, 0], packed.race_axis[contact, 1], packed.race_axis[contact, 2]
-    if g >= 0:
-        rg = rotation[g]
-        o0, o1, o2 = (position[g, 0] + rg[0, 0] * o0 + rg[0, 1] * o1 + rg[0, 2] * o2,
-                      position[g, 1] + rg[1, 0] * o0 + rg[1, 1] * o1 + rg[1, 2] * o2,
-                      position[g, 2] + rg[2, 0] * o0 + rg[2, 1] * o1 + rg[2, 2] * o2)
-        a0, a1, a2 = (rg[0, 0] * a0 + rg[0, 1] * a1 + rg[0, 2] * a2, rg[1, 0] * a0 + rg[1, 1] * a1 + rg[1, 2] * a2,
-                      rg[2, 0] * a0 + rg[2, 1] * a1 + rg[2, 2] * a2)
+    o0, o1, o2, a0, a1, a2 = in_world(g, position, rotation, packed.race_centre[contact], packed.race_axis[contact])
     e0, e1, e2 = rotation[b, 0, 2], rotation[b, 1, 2], rotation[b, 2, 2]  # the roller's axis
     dissipated = stored = 0.0
     for k in range(packed.race_slices[contact]):
