@@ -12,6 +12,8 @@
 ``bearing-mbs skidding-map SCENARIO.toml --out DIR [--loads ...] [--temperatures ...] [--speeds ...]``
 (docs/skidding.md)
 ``bearing-mbs cage-models SCENARIO.toml --out DIR [--no-roller-guided]`` (docs/cage-models.md)
+``bearing-mbs spatial SCENARIO.toml --out DIR [--engine ...] [--misalignment RAD] [--crown-radius M] ...``
+(docs/spatial.md)
 ``bearing-mbs slewing SCENARIO.toml --out DIR`` (docs/slewing.md)
 ``bearing-mbs journal SCENARIO.toml --out DIR`` (docs/fluid-film.md)
 

@@ -1,5 +1,6 @@
 """The subcommands the cylindrical roller bearing offers ``bearing-mbs``: ``stiffness`` (its quasi-static solution),
-``static-check``, ``skidding``, ``skidding-map`` and ``cage-models`` (its studies). Each is a
+``static-check``, ``skidding``, ``skidding-map`` and ``cage-models`` (its studies), ``spatial`` (a run in three
+dimensions). Each is a
 :class:`~bearing_mbs.models.protocol.Command`; ``cli`` is the :class:`~bearing_mbs.models.protocol.CommandLine`
 the command line lends them (shared options, output directory, exit codes, the study services)."""
 
@@ -150,7 +151,52 @@ def _cage_models(args, cli) -> int:
 
 
 #: The model's subcommands, in the order ``bearing-mbs --help`` lists them.
+def _spatial_arguments(parser, cli) -> None:
+    parser.add_argument("scenario", help="bearing scenario TOML file (a penalty cage, dry contacts: docs/spatial.md)")
+    cli.add_output(parser, "output directory: summary.json, series.npz, slice_loads.png, attitudes.png (new or "
+                           "empty, or give --overwrite)")
+    parser.add_argument("--engine", default="reference", help="reference (default) or exudyn")
+    parser.add_argument("--step", type=float, default=2e-7, metavar="S", help="RK4 step [s] (default 2e-7)")
+    parser.add_argument("--end-time", type=float, default=2e-3, metavar="S", help="simulated time [s] (default 2e-3)")
+    parser.add_argument("--output-interval", type=float, default=1e-4, metavar="S",
+                        help="output spacing [s] (default 1e-4)")
+    parser.add_argument("--slices", type=int, default=10, help="slices per roller contact (default 10)")
+    parser.add_argument("--misalignment", type=float, default=0.0, metavar="RAD",
+                        help="the inner ring's tilt about x [rad] (default 0)")
+    parser.add_argument("--crown-radius", type=float, default=None, metavar="M",
+                        help="the rollers' circular crown radius [m] over their outer quarters (default: straight)")
+    parser.add_argument("--damping-time", type=float, default=0.0, metavar="S",
+                        help="stiffness-proportional contact damping [s] on top of the scenario's laws (default 0)")
+    cli.add_overrides(parser, "override any spec field of the scenario (repeatable)")
+    parser.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def _spatial(args, cli) -> int:
+    """Exit 0: success; 3: suspect (the energy audit did not close); 1: stopped early (what was computed is
+    written); 2: bad input, nothing ran."""
+    from bearing_mbs.models.cylindrical_roller.studies import spatial_run
+
+    spec = cli.services.load_spec(args.scenario, args.set)
+    directory = cli.output_directory(args)
+    summary = spatial_run.run(spec, directory, engine=args.engine, step=args.step, end_time=args.end_time,
+                              output_interval=args.output_interval, slices=args.slices,
+                              misalignment=args.misalignment, crown_radius=args.crown_radius,
+                              damping_time=args.damping_time, figures=not args.no_figures,
+                              progress=cli.progress(args.quiet))
+    print(f"{summary['scenario']} in three dimensions ({summary['engine']}): {summary['status']} at "
+          f"{summary['end_time_s']:.4g} s, cage slip {summary['cage_slip_final']:.4g}, largest slice load "
+          f"{summary['largest_slice_load_N']:.4g} N, largest skew {summary['largest_skew_rad']:.3g} rad, "
+          f"{summary['wall_time_s']:.3g} s wall time")
+    if summary["message"]:
+        print(summary["message"])
+    print(f"-> {directory}")
+    return cli.exit_code(summary["status"])
+
+
 COMMANDS = (
+    Command("spatial", "run the bearing in three dimensions (skew, tilt, slice loads, ribs): docs/spatial.md",
+            _spatial_arguments, _spatial),
     Command("stiffness", "quasi-static load distribution and 2x2 stiffness of a bearing scenario (no simulation)",
             _stiffness_arguments, _stiffness),
     Command("static-check", "settled dynamic equilibria and stiffness against the quasi-static solution",
