@@ -15,13 +15,13 @@ from __future__ import annotations
 import json
 import time
 
-from common import OUT, SCENARIOS, machine, write
-
 from bearing_mbs.engines import simulate
 from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
 from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
+
+from common import OUT, SCENARIOS, machine, write
 
 REVOLUTION = 60 / 1500  # s
 STEP, SPAN = 2e-7, 2e-3  # s

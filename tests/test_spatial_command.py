@@ -12,9 +12,10 @@ import json
 
 import numpy as np
 import pytest
-from cases import SCENARIOS
 
 from bearing_mbs.cli import main
+
+from cases import SCENARIOS
 
 SCENARIO = str(SCENARIOS / "seed_hss_steady.toml")
 
