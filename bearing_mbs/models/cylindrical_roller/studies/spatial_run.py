@@ -24,7 +24,7 @@ from bearing_mbs.io.json import write_json
 from bearing_mbs.models.cylindrical_roller.quasistatic import CircularCrown
 from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
 from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_slice_loads
-from bearing_mbs.spec import SpecError
+from bearing_mbs.spec import SpecError, methods
 
 #: The engines that run a spatial scene.
 ENGINES = {"reference": simulate_spatial_reference, "exudyn": simulate_spatial_exudyn}
@@ -77,7 +77,7 @@ def _summary(spec, bearing, series, engine: str, step: float, misalignment: floa
         status = INTERRUPTED if "stopped on request" in series.message else FAILED
     skew, tilt = bearing.attitudes(series)
     return {
-        "scenario": spec.scenario.name, "engine": engine, "method": "rk4", "step_s": step, "slices": slices,
+        "scenario": spec.scenario.name, "engine": engine, "method": methods.RK4.name, "step_s": step, "slices": slices,
         "misalignment_rad": misalignment, "crown_radius_m": crown_radius, "status": status, "message": series.message,
         "end_time_s": float(series.time[-1]), "steps": series.steps, "wall_time_s": series.wall_time_s,
         "cage_slip_final": float(bearing.cage_slip(series)[-1]),
