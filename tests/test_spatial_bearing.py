@@ -6,7 +6,8 @@ References:
   the two are the same physics: an aligned three-dimensional run from rest at 5 kN (rollers and cage accelerated by
   friction, the cage pushed by its rollers) must reproduce the planar run's cage speed and roller loads within 0.5 %
   of their scales (measured 5.6e-12 and 7.7e-10 over 2 ms, the cage at slip 0.86: RK4 on the quaternion against RK4
-  on the angle);
+  on the angle), and every slice's frictional power intensity (the smearing measure, docs/smearing.md) the planar
+  contact's;
 * document 003's quasi-static load distribution (``solve_radial``, checked against Stribeck/Harris in
   tests/test_quasistatic_planar.py) at the same geometry, load and speed (centrifugal forces included): the inner
   ring's mean displacement over the last 2 ms of a 5 ms run from rolling start must match it within 2 % (measured
@@ -38,6 +39,7 @@ from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
 from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
 from bearing_mbs.models import build_scene, load_spec
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.metrics import raceway_power_intensity
 from bearing_mbs.models.cylindrical_roller.quasistatic import (
     CircularCrown,
     RollerSet,
@@ -123,7 +125,8 @@ def test_aligned_the_bearing_is_the_planar_model():
     bearing_spec = load_spec(SCENARIOS / "seed_hss_steady.toml", ["scenario.variant=dry", "drive.initial_state=rest",
                                                                   "load.radial=5000", *solver])
     end = 2e-3
-    planar = simulate(build_scene(bearing_spec), bearing_spec.solver, end)
+    scene = build_scene(bearing_spec)
+    planar = simulate(scene, bearing_spec.solver, end)
     bearing = build_spatial_bearing(bearing_spec, damping_time=0.0)  # the planar laws alone
     spatial = simulate_spatial_reference(bearing.scene, 2e-7, end, 1e-4)
     assert planar.success and spatial.success
@@ -133,6 +136,12 @@ def test_aligned_the_bearing_is_the_planar_model():
     inner = [i for i, name in enumerate(planar.pair_names) if name.endswith("inner_race")]
     loads = planar.pair_output[:, inner, 3]  # normal force
     np.testing.assert_allclose(bearing.roller_loads(spatial), loads, rtol=0, atol=5e-3 * loads.max())
+    # and the smearing measure: the planar contacts' frictional power intensity is every slice's of the aligned roller
+    intensity = raceway_power_intensity(bearing_spec, scene, planar, np.ones(planar.time.size, bool), "inner_race")
+    assert intensity.max() > 1e5  # W/m²: the rollers slide while they are dragged up to speed
+    slices = bearing.power_intensity(spatial, INNER)
+    for reduce in (np.max, np.min):
+        np.testing.assert_allclose(reduce(slices, axis=2), intensity, rtol=0, atol=5e-3 * intensity.max())
 
 
 def test_a_slow_misaligned_run_carries_document_003s_slice_loads(tmp_path):

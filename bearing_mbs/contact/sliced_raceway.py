@@ -45,9 +45,10 @@ from bearing_mbs.contact.normal import hysteresis_factor, latch_approach_speed, 
 
 @numba.njit(cache=True)
 def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force, moment, slice_loads,
-                       latched, latch_next):
+                       slice_friction, latched, latch_next):
     """Add raceway contact ``contact``'s forces [N] and moments about the bodies' centres [N m], both in the world
-    frame, to ``force`` and ``moment`` (bodies × 3), and its slice loads Q_k [N] into ``slice_loads[contact]``.
+    frame, to ``force`` and ``moment`` (bodies × 3), its slice loads Q_k [N] into ``slice_loads[contact]`` and the
+    power its slices' friction dissipates, |F_T·v_s| [W], into ``slice_friction[contact]``.
     position, velocity (bodies × 3) [m, m/s], rotation (bodies × 3 × 3), omega_world (bodies × 3) [rad/s];
     latched (contacts × slices) [m/s]: the slices' approach speeds latched at their onsets, and ``latch_next`` the
     values an accepted step at this state leaves (:func:`.normal.latch_approach_speed`). Returns the power its
@@ -72,6 +73,7 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         r0, r1, r2 = c0 - o0, c1 - o1, c2 - o2
         along = r0 * a0 + r1 * a1 + r2 * a2
         slice_loads[contact, k] = 0.0
+        slice_friction[contact, k] = 0.0
         latch_next[contact, k] = 0.0
         if plane:  # the distance from the plane, along its normal towards the roller
             interference = roller_radius - along - packed.race_drops[contact, k]
@@ -95,8 +97,9 @@ def add_sliced_raceway(packed, contact, position, rotation, velocity, omega_worl
         load = max(elastic * (hysteresis_factor(-rate, factor, approach) + exponent * tau * rate / interference), 0.0)
         slice_loads[contact, k] = load
         stored += power_law_energy(interference, coefficient, exponent)
-        dissipated += (load - elastic) * rate + apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load,
-                                                              u0, u1, u2, mu, regularisation, force, moment)
+        slice_friction[contact, k] = apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load, u0, u1,
+                                                   u2, mu, regularisation, force, moment)
+        dissipated += (load - elastic) * rate + slice_friction[contact, k]
         if arm > 0.0:  # about the roller's axis, against its spin relative to the ring
             spin = omega_world[b, 0] * e0 + omega_world[b, 1] * e1 + omega_world[b, 2] * e2
             if g >= 0:

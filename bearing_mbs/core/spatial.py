@@ -122,6 +122,7 @@ class SpatialSeries(NamedTuple):
     """A spatial run's output at its output instants: time (T,) [s]; per body (T, N, ·): position r [m],
     orientation p (unit quaternion, scalar first, its sign continuous in time), velocity ṙ [m/s] (world frame),
     angular velocity ω [rad/s] (body frame); slice_loads (T, C, S) [N]: each raceway contact's slice loads Q_k;
+    slice_friction (T, C, S) [W]: the power their friction dissipates, |F_T·v_s| (the smearing measure's numerator);
     flange_loads (T, F) [N]: each flange contact's load; work (T, 2) [J]: the work the loads supplied and the work
     the dampers and friction dissipated since t = 0; stored (T,) [J]: the energy the springs and contacts store; the
     steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
@@ -134,6 +135,7 @@ class SpatialSeries(NamedTuple):
     velocity: np.ndarray
     angular_velocity: np.ndarray
     slice_loads: np.ndarray
+    slice_friction: np.ndarray
     flange_loads: np.ndarray
     work: np.ndarray
     stored: np.ndarray

@@ -17,8 +17,8 @@ from bearing_mbs.core.rotations import rotation_from_vector
 
 class SpatialWork(NamedTuple):
     """What a force evaluation fills in: the bodies' rotations (N, 3, 3), the forces on them [N] (world frame) and
-    the moments about their centres [N m] (body frame) (N, 3), the raceway contacts' slice loads (C, S) and the
-    flange contacts' loads (F,) [N], and the slices' approach speeds an accepted step at this state would latch
+    the moments about their centres [N m] (body frame) (N, 3), the raceway contacts' slice loads (C, S) [N] and the
+    power their slices' friction dissipates (C, S) [W], the flange contacts' loads (F,) [N], and the slices' approach speeds an accepted step at this state would latch
     (C, S) [m/s]; its scratch, the moments and angular velocities in the world frame (N, 3); and the state the
     engines advance once per accepted step, the slices' latched approach speeds (C, S) [m/s]."""
 
@@ -26,6 +26,7 @@ class SpatialWork(NamedTuple):
     force: np.ndarray
     moment: np.ndarray
     slice_loads: np.ndarray
+    slice_friction: np.ndarray
     flange_loads: np.ndarray
     latch_next: np.ndarray
     moment_world: np.ndarray
@@ -38,7 +39,7 @@ def new_work(bodies: int, packed) -> SpatialWork:
     (:class:`bearing_mbs.core.spatial.SpatialPacked`)."""
     slices = packed.race_positions.shape
     return SpatialWork(np.empty((bodies, 3, 3)), np.empty((bodies, 3)), np.empty((bodies, 3)), np.zeros(slices),
-                       np.zeros(packed.flange_roller.size), np.zeros(slices), np.empty((bodies, 3)),
+                       np.zeros(slices), np.zeros(packed.flange_roller.size), np.zeros(slices), np.empty((bodies, 3)),
                        np.empty((bodies, 3)), np.zeros(slices))
 
 
@@ -116,7 +117,8 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         dissipated += resistance * speed * speed + (angular + angular_quadratic * abs(spin)) * spin * spin
     for contact in range(packed.race_roller.size):
         lost, kept = add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force,
-                                        moment_world, work.slice_loads, work.latched, work.latch_next)
+                                        moment_world, work.slice_loads, work.slice_friction, work.latched,
+                                        work.latch_next)
         dissipated, stored = dissipated + lost, stored + kept
     for contact in range(packed.flange_roller.size):
         lost, kept = add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment_world,

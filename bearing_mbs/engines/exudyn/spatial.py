@@ -140,9 +140,9 @@ class _Forces:
         return self.evaluate(q, q_t).tolist()
 
     @property
-    def loads(self) -> tuple[np.ndarray, np.ndarray]:
-        """The slice loads and the flange loads of the last evaluation [N]."""
-        return self.work.slice_loads.copy(), self.work.flange_loads.copy()
+    def loads(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The slice loads [N], the slices' friction power [W] and the flange loads [N] of the last evaluation."""
+        return self.work.slice_loads.copy(), self.work.slice_friction.copy(), self.work.flange_loads.copy()
 
 
 class _Recorder:
@@ -203,5 +203,5 @@ class _Recorder:
 
     def series(self) -> tuple[np.ndarray, ...]:
         """The times (T,) recorded, the position, orientation, velocity and angular velocity (T, N, ·), the slice
-        loads (T, C, S), the flange loads (T, F), the work (T, 2) and the stored energy (T,)."""
-        return tuple(np.array([row[k] for row in self.rows]) for k in range(9))
+        loads and friction power (T, C, S), the flange loads (T, F), the work (T, 2) and the stored energy (T,)."""
+        return tuple(np.array([row[k] for row in self.rows]) for k in range(10))

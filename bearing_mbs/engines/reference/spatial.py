@@ -115,6 +115,7 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     packed = scene.packed()
     work, rates, energy = new_work(len(scene.bodies), packed), np.empty_like(y), np.zeros(2)
     states, loads = np.empty((times.size, *y.shape)), np.empty((times.size, *packed.race_positions.shape))
+    friction = np.empty_like(loads)
     flange_loads = np.empty((times.size, packed.flange_roller.size))
     works, stored = np.empty((times.size, 2)), np.empty(times.size)
     steps, message, reached = 0, "", times.size
@@ -130,6 +131,7 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
                 break
             *_, stored[k] = spatial_rates(y, bodies, packed, work, rates)  # the contact loads of this instant
             states[k], loads[k], flange_loads[k], works[k] = y, work.slice_loads, work.flange_loads, energy
+            friction[k] = work.slice_friction
             progress.update(times[k])
             if stop.is_set() and k + 1 < times.size:
                 message, reached = stopped_message(times[k]), k + 1
@@ -137,4 +139,5 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     states = states[:reached]
     return SpatialSeries(times[:reached], states[:, :, POSITION:ORIENTATION], states[:, :, ORIENTATION:VELOCITY],
                          states[:, :, VELOCITY:ANGULAR_VELOCITY], states[:, :, ANGULAR_VELOCITY:], loads[:reached],
-                         flange_loads[:reached], works[:reached], stored[:reached], steps, message, clock.wall_time_s)
+                         friction[:reached], flange_loads[:reached], works[:reached], stored[:reached], steps, message,
+                         clock.wall_time_s)

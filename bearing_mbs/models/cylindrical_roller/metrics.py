@@ -102,10 +102,17 @@ def raceway_contact(spec, scene, group: str) -> LineContact:
 def frictional_power_intensity(traction, sliding, load, contact: LineContact) -> np.ndarray:
     """q = |F Δu|/(2 b l) [W/m²] of line contacts carrying ``load`` Q [N] with the traction F [N] at the sliding
     speed Δu [m/s] (arrays of one shape); 0 where Q <= 0 (no contact)."""
-    traction, sliding, load = np.broadcast_arrays(*(np.asarray(x, float) for x in (traction, sliding, load)))
+    traction, sliding = np.broadcast_arrays(*(np.asarray(x, float) for x in (traction, sliding)))
+    return power_intensity(traction * sliding, load, contact)
+
+
+def power_intensity(power, load, contact: LineContact) -> np.ndarray:
+    """q = |P|/(2 b l) [W/m²] of line contacts carrying ``load`` Q [N] whose friction dissipates ``power`` P [W]
+    (arrays of one shape), b Hertz's half-width at Q/l; 0 where Q <= 0 (no contact)."""
+    power, load = np.broadcast_arrays(*(np.asarray(x, float) for x in (power, load)))
     touching = load > 0
     half_width = hertz_half_width(np.where(touching, load, 1.0) / contact.length, contact.radius, contact.reduced_modulus)
-    return np.where(touching, np.abs(traction * sliding) / (2 * half_width * contact.length), 0.0)
+    return np.where(touching, np.abs(power) / (2 * half_width * contact.length), 0.0)
 
 
 def law_traction(scene, pair: int, load, sliding, rolling) -> np.ndarray:

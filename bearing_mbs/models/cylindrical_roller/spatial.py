@@ -54,9 +54,10 @@ from bearing_mbs.core.spatial import (
     TranslationSpring,
 )
 from bearing_mbs.core.topology import Group
-from bearing_mbs.models.cylindrical_roller.build import cage_drag, group_law, roller_drag
+from bearing_mbs.models.cylindrical_roller.build import cage_drag, group_law, raceway_line_contact, roller_drag
 from bearing_mbs.models.cylindrical_roller.drivetrain import initial_speed
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
+from bearing_mbs.models.cylindrical_roller.metrics import LineContact, power_intensity
 from bearing_mbs.models.cylindrical_roller.operating_oil import operating_oil
 from bearing_mbs.spec.fields import SpecError
 
@@ -74,11 +75,20 @@ SHAFT_TILT_STIFFNESS = 1e9
 
 class SpatialBearing(NamedTuple):
     """The three-dimensional bearing of a spec: its scene and what the outputs need (the geometry, the epicyclic
-    cage speed [rad/s] of the inner ring's speed)."""
+    cage speed [rad/s] of the inner ring's speed, the slices' line contacts on the inner and outer raceway)."""
 
     scene: SpatialScene
     geometry: BearingGeometry
     epicyclic_cage_speed: float
+    slice_contacts: tuple[LineContact, LineContact]
+
+    def power_intensity(self, series, contact: int = INNER) -> np.ndarray:
+        """Each roller's slices' frictional power intensity [W/m²] on its ``contact`` raceway, (T, Z, slices): the
+        smearing measure of docs/smearing.md, q = |F_T·v_s|/(2 b w) with b Hertz's half-width at the slice's load
+        per length (:func:`.metrics.power_intensity`)."""
+        rollers = self.geometry.rollers
+        power = series.slice_friction[:, contact:CONTACTS_PER_ROLLER * rollers:CONTACTS_PER_ROLLER]
+        return power_intensity(power, self.slice_loads(series, contact), self.slice_contacts[contact])
 
     def slice_loads(self, series, contact: int = INNER) -> np.ndarray:
         """Each roller's slice loads [N] on its ``contact`` (:data:`INNER` or :data:`OUTER` raceway) at the output
@@ -185,7 +195,9 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
                          raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,), drags=drags,
                          gravity=(0.0, -spec.scenario.gravity, 0.0))
-    return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed))
+    contacts = tuple(LineContact(*raceway_line_contact(spec, geometry, group)[:2], geometry.roller_length / slices)
+                     for group in (Group.INNER_RACE, Group.OUTER_RACE))
+    return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed), contacts)
 
 
 def _check_supported(spec) -> None:
