@@ -10,22 +10,21 @@ outside it; −1: a bore with the roller inside), the slice's interference is
     \Delta_k = s\,(R - d_k) + r - h_k,
 
 R the raceway's radius, r the roller's, h_k the crown drops. Against a plane (a cage pocket's wall: point o, unit
-normal a towards the roller) it is Δ_k = r − (c_k − o)·a − h_k with n_k = a and s = 1. To first order in the tilts this is document 003's
-Δ_k = δ + α z_k − h_k (the approach δ at the roller's centre, the relative tilt α: eq. 12 there). A slice in contact
-carries
+normal a towards the roller) it is Δ_k = r − (c_k − o)·a − h_k, with n_k = a and s = 1. To first order in the tilts
+this is document 003's Δ_k = δ + α z_k − h_k (the approach δ at the roller's centre, the relative tilt α: eq. 12
+there). A slice in contact carries
 
 .. math::
     Q_k = C_f\,w\,\Delta_k^{\,n-1}\,(\Delta_k + n\tau\dot\Delta_k) \ge 0,
 
-with, where the contact has a damping factor d, the planar laws' hysteresis term d Δ̇_k/v_k added to the
-bracket's factor (v_k the slice's approach speed latched at its onset: :mod:`.normal`); its elastic part
-Q_e = C_f w Δ_k^n storing C_f w Δ_k^(n+1)/(n+1) and the rest dissipating (Q_k − Q_e) Δ̇_k >= 0,
-
 the slice law of document 003 (eqs. 14–16) with stiffness-proportional damping (τ [s]: the slice's tangent stiffness
-n C_f w Δ^(n−1) times τ), Δ̇_k = −s n_k·(ċ_k − v_ring(c_k)) from the roller's and the ring's rigid motions. The
-force s Q_k n_k acts on the roller at its surface point P_k = c_k − s r n_k, and its reaction on the ring there; its
-moment about the roller's centre is z_k R_b e₃ × s Q_k n_k (the part along n_k has no arm). The slice's friction
-opposes the sliding velocity v_s of the roller's material point at P_k against the ring's, in the tangent plane:
+n C_f w Δ^(n−1) times τ), Δ̇_k = −s n_k·(ċ_k − v_ring(c_k)) from the roller's and the ring's rigid motions; where the
+contact has a damping factor d, the planar laws' hysteresis term d Δ̇_k/v_k is added to the bracket's factor (v_k the
+slice's approach speed latched at its onset: :mod:`.normal`). Its elastic part Q_e = C_f w Δ_k^n stores
+C_f w Δ_k^(n+1)/(n+1); the rest dissipates (Q_k − Q_e) Δ̇_k >= 0. The force s Q_k n_k acts on the roller at its
+surface point P_k = c_k − s r n_k, and its reaction on the ring there; its moment about the roller's centre is
+z_k R_b e₃ × s Q_k n_k (the part along n_k has no arm). The slice's friction opposes the sliding velocity v_s of the
+roller's material point at P_k against the ring's, in the tangent plane:
 F_T = −μ Q_k erf(2|v_s|/v_reg) v_s/|v_s| (the planar model's ``erf`` law, :mod:`.friction`, on the speed), at P_k. A
 rolling-resistance arm μ_R adds the moment −μ_R Q_k erf(2 ω_rel r/v_reg) about the roller's axis against its spin
 relative to the ring, ω_rel = (ω_b − ω_g)·e₃ (the planar model's, :func:`.friction.rolling_resistance_moment`).
