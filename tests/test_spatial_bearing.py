@@ -210,3 +210,15 @@ def test_the_engines_agree_on_skew_cage_slip_and_the_largest_slice_load():
     for output in outputs:
         expected = output(reference)
         np.testing.assert_allclose(output(exudyn), expected, rtol=0, atol=5e-3 * np.abs(expected).max())
+
+
+def test_the_rib_loads_are_each_rollers_own():
+    """The scene lists the outer ring's two ribs per roller, then the inner ring's one per roller: each roller's
+    three rib loads must come out in its own row."""
+    bearing = build_spatial_bearing(spec(), slices=2)
+    rollers = bearing.geometry.rollers
+    names = [flange.name for flange in bearing.scene.flanges]
+    loads = np.arange(len(names), dtype=float)[None, :]  # a load per flange: its index
+    ribs = bearing.rib_loads(type("Series", (), {"flange_loads": loads, "time": np.zeros(1)}))
+    for k in range(rollers):
+        assert [names[int(i)] for i in ribs[0, k]] == [f"roller{k}-rib+", f"roller{k}-rib-", f"roller{k}-inner_rib"]

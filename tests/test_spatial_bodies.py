@@ -218,3 +218,17 @@ def test_a_stop_request_ends_the_run_and_keeps_its_output(engine):
     np.testing.assert_allclose(series.time[-1], 0.5 * END, rtol=1e-9)  # stopped where asked, the instants kept
     assert series.time.size == 11 and np.isfinite(series.angular_velocity).all()
     assert series.wall_time_s > 0
+
+
+@pytest.mark.parametrize("rotvec", [(0.3, -0.5, 1.1), (1e-6, 2e-6, -1e-6), (3.0, 0.1, 0.2), (0.0, 0.0, 0.0)])
+def test_the_rotation_matrices_are_scipys(rotvec):
+    """The compiled rotation matrices of a quaternion and of a rotation vector (core/rotations.py) against scipy's
+    (1e-15), across small, ordinary and near-π angles."""
+    from bearing_mbs.core.rotations import rotation_from_quaternion, rotation_from_vector
+
+    rotation = Rotation.from_rotvec(rotvec)
+    out = np.empty((3, 3))
+    rotation_from_quaternion(*quaternion(rotation), out)
+    np.testing.assert_allclose(out, rotation.as_matrix(), rtol=0, atol=1e-15)
+    rotation_from_vector(*rotvec, out)
+    np.testing.assert_allclose(out, rotation.as_matrix(), rtol=0, atol=1e-15)
