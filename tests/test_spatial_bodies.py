@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 from scipy.special import ellipj
 
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.spatial import BodyMoment, SpatialBody, SpatialScene
@@ -186,7 +187,7 @@ def test_a_diverging_run_stops_with_the_body_and_keeps_what_it_computed(engine):
         SpatialBody("calm", 1.0, (1.0, 1.0, 1.0)),
         SpatialBody("wild", 1.0, (1.0, 2.0, 2.5), angular_velocity=(3e3, 1e4, 3e3)),))
     series = run(scene, 1e-1, 100.0, 1.0)
-    assert not series.success
+    assert not series.success and series.failure == Failure.NONFINITE
     assert "'wild'" in series.message
     assert 1 <= series.time.size < 101
     assert np.isfinite(series.angular_velocity).all()
@@ -213,7 +214,7 @@ def test_a_stop_request_ends_the_run_and_keeps_its_output(engine):
     stop = StopRequest()
     meter = _StopHalfway(stop)
     series = engine(top_scene(), 1e-3, END, 0.1, progress=meter, stop=stop)
-    assert not series.success
+    assert not series.success and series.failure == Failure.INTERRUPTED
     assert meter.updates >= 10  # the run reported its progress at its output instants
     np.testing.assert_allclose(series.time[-1], 0.5 * END, rtol=1e-9)  # stopped where asked, the instants kept
     assert series.time.size == 11 and np.isfinite(series.angular_velocity).all()

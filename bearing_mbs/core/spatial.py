@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.spatial_elements import (  # noqa: F401 (the elements are the scene's vocabulary)
     RACEWAY_SIDES,
     UNIT_TOLERANCE,
@@ -126,8 +127,9 @@ class SpatialSeries(NamedTuple):
     flange_loads (T, F) [N]: each flange contact's load; work (T, 2) [J]: the work the loads supplied and the work
     the dampers and friction dissipated since t = 0; stored (T,) [J]: the energy the springs and contacts store; the
     steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
-    last good output instant: a state no longer finite, or a stop request); wall_time_s: the stepping's wall time
-    [s]."""
+    last good output instant) and ``failure`` what kind of stop it was (:class:`~bearing_mbs.core.failures.Failure`:
+    ``NONFINITE``, ``SOLVER_FAILED``, ``INTERRUPTED``; ``NONE`` when the run reached its end); wall_time_s: the
+    stepping's wall time [s]."""
 
     time: np.ndarray
     position: np.ndarray
@@ -142,10 +144,11 @@ class SpatialSeries(NamedTuple):
     steps: int
     message: str = ""
     wall_time_s: float = 0.0
+    failure: Failure = Failure.NONE
 
     @property
     def success(self) -> bool:
-        return not self.message
+        return self.failure == Failure.NONE
 
 
 def stopped_message(t: float) -> str:

@@ -25,6 +25,7 @@ import math
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message, stopped_message
@@ -82,11 +83,11 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
             solved, detail = False, str(error)
     steps = int(mbs.sys["dynamicSolver"].it.currentStepIndex) - 1
     series = recorder.series()
-    message = recorder.message
-    if not solved and not message:
-        message = (f"t = {recorder.time:.6g} s: Exudyn's {method.name} stopped ({detail or 'no message'}). Likely fix: a "
-                   f"smaller step than {step:.3g} s")
-    return SpatialSeries(*series, steps, message, clock.wall_time_s)
+    if not solved and recorder.failure == Failure.NONE:
+        recorder.stop_with(Failure.SOLVER_FAILED, f"t = {recorder.time:.6g} s: Exudyn's {method.name} stopped "
+                                                  f"({detail or 'no message'}). Likely fix: a smaller step than "
+                                                  f"{step:.3g} s")
+    return SpatialSeries(*series, steps, recorder.message, clock.wall_time_s, recorder.failure)
 
 
 def _add_bodies(mbs, scene: SpatialScene) -> tuple[list, _Forces]:
@@ -153,7 +154,7 @@ class _Recorder:
                  progress: ProgressMeter, stop: StopRequest):
         self.mbs, self.nodes, self.times, self.scene, self.step, self.forces = mbs, nodes, times, scene, step, forces
         self.progress, self.stop = progress, stop
-        self.time, self.message = 0.0, ""
+        self.time, self.message, self.failure = 0.0, "", Failure.NONE
         kinds = exu.OutputVariableType
         self.kinds = (kinds.Position, kinds.Velocity, kinds.RotationMatrix, kinds.AngularVelocityLocal)
         self.rows: list[tuple] = []
@@ -186,8 +187,8 @@ class _Recorder:
                                   np.reshape(data.GetODE2Coordinates_t(), (-1, 6))])
         finite = np.isfinite(states).all(axis=1)
         if not finite.all():
-            self.message = nonfinite_message(self.scene, finite, self.rows[-1][4], t, self.step)
-            return False
+            return self.stop_with(Failure.NONFINITE, nonfinite_message(self.scene, finite, self.rows[-1][4], t,
+                                                                       self.step))
         self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())
         latch(self.forces.work)  # the contacts' latched approach speeds, once per accepted step
         power = np.array(self.forces.powers[:2])
@@ -197,9 +198,13 @@ class _Recorder:
             self.record(t)
             self.progress.update(t)
             if self.stop.is_set() and len(self.rows) < self.times.size:
-                self.message = stopped_message(t)
-                return False
+                return self.stop_with(Failure.INTERRUPTED, stopped_message(t))
         return True
+
+    def stop_with(self, failure: Failure, message: str) -> bool:
+        """Record why the run stops; returns False, which tells Exudyn to stop after this step."""
+        self.failure, self.message = failure, message
+        return False
 
     def series(self) -> tuple[np.ndarray, ...]:
         """The times (T,) recorded, the position, orientation, velocity and angular velocity (T, N, ·), the slice

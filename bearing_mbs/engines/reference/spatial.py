@@ -23,6 +23,7 @@ from typing import NamedTuple
 import numba
 import numpy as np
 
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter
 from bearing_mbs.core.rotations import rotation_from_quaternion
@@ -34,7 +35,7 @@ from bearing_mbs.engines.reference.tableaus import RK4
 from bearing_mbs.engines.run import progress_meter, stop_request, timed_run
 
 #: The columns of a body's state: r (3), p (4), ṙ (3), ω (3).
-POSITION, ORIENTATION, VELOCITY, ANGULAR_VELOCITY, STATE_SIZE = 0, 3, 7, 10, 13
+POSITION, ORIENTATION, VELOCITY, ANGULAR_VELOCITY = 0, 3, 7, 10
 
 
 class SpatialBodies(NamedTuple):
@@ -118,7 +119,7 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     friction = np.empty_like(loads)
     flange_loads = np.empty((times.size, packed.flange_roller.size))
     works, stored = np.empty((times.size, 2)), np.empty(times.size)
-    steps, message, reached = 0, "", times.size
+    steps, message, failure, reached = 0, "", Failure.NONE, times.size
     progress, stop = progress_meter(progress), stop_request(stop)
     with timed_run(progress, end_time, f"{scene.name} (reference rk4, three dimensions)") as clock:
         for k in range(times.size):
@@ -126,18 +127,19 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
                 steps += spatial_runge_kutta(y, energy, bodies, packed, work, times[k] - times[k - 1], step, RK4.a,
                                              RK4.b)
             if not np.isfinite(y).all():
-                message, reached = nonfinite_message(scene, np.isfinite(y).all(axis=1),
-                                                     states[k - 1, :, ANGULAR_VELOCITY:], times[k], step), k
+                message, failure, reached = nonfinite_message(scene, np.isfinite(y).all(axis=1),
+                                                              states[k - 1, :, ANGULAR_VELOCITY:], times[k], step), \
+                    Failure.NONFINITE, k
                 break
             *_, stored[k] = spatial_rates(y, bodies, packed, work, rates)  # the contact loads of this instant
             states[k], loads[k], flange_loads[k], works[k] = y, work.slice_loads, work.flange_loads, energy
             friction[k] = work.slice_friction
             progress.update(times[k])
             if stop.is_set() and k + 1 < times.size:
-                message, reached = stopped_message(times[k]), k + 1
+                message, failure, reached = stopped_message(times[k]), Failure.INTERRUPTED, k + 1
                 break
     states = states[:reached]
     return SpatialSeries(times[:reached], states[:, :, POSITION:ORIENTATION], states[:, :, ORIENTATION:VELOCITY],
                          states[:, :, VELOCITY:ANGULAR_VELOCITY], states[:, :, ANGULAR_VELOCITY:], loads[:reached],
                          friction[:reached], flange_loads[:reached], works[:reached], stored[:reached], steps, message,
-                         clock.wall_time_s)
+                         clock.wall_time_s, failure)

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.interrupt import active_request
 from bearing_mbs.core.result import FAILED, INTERRUPTED, SUCCESS, SUSPECT
 from bearing_mbs.core.spatial import energy_audit
@@ -74,11 +75,12 @@ def _summary(spec, bearing, series, engine: str, step: float, misalignment: floa
     if series.success:
         status = SUCCESS if audit_error <= AUDIT_TOLERANCE else SUSPECT
     else:
-        status = INTERRUPTED if "stopped on request" in series.message else FAILED
+        status = INTERRUPTED if series.failure == Failure.INTERRUPTED else FAILED
     skew, tilt = bearing.attitudes(series)
     return {
         "scenario": spec.scenario.name, "engine": engine, "method": methods.RK4.name, "step_s": step, "slices": slices,
-        "misalignment_rad": misalignment, "crown_radius_m": crown_radius, "status": status, "message": series.message,
+        "misalignment_rad": misalignment, "crown_radius_m": crown_radius, "status": status, "failure": series.failure.label,
+        "message": series.message,
         "end_time_s": float(series.time[-1]), "steps": series.steps, "wall_time_s": series.wall_time_s,
         "cage_slip_final": float(bearing.cage_slip(series)[-1]),
         "largest_slice_load_N": float(series.slice_loads.max()) if series.slice_loads.size else 0.0,
