@@ -54,14 +54,22 @@ from bearing_mbs.core.spatial import (
     TranslationSpring,
 )
 from bearing_mbs.core.topology import Group
-from bearing_mbs.models.cylindrical_roller.build import cage_drag, group_law, raceway_line_contact, roller_drag
+from bearing_mbs.models.cylindrical_roller.build import (
+    CAGE,
+    INNER_RING,
+    first_roller,
+    group_law,
+    lubricant_elements,
+    raceway_line_contact,
+)
 from bearing_mbs.models.cylindrical_roller.drivetrain import initial_speed
 from bearing_mbs.models.cylindrical_roller.geometry import BearingGeometry
 from bearing_mbs.models.cylindrical_roller.metrics import LineContact, power_intensity
 from bearing_mbs.models.cylindrical_roller.operating_oil import operating_oil
 from bearing_mbs.spec.fields import SpecError
 
-INNER_RING, CAGE, FIRST_ROLLER = 0, 1, 2
+#: The bodies are numbered as the planar model's caged scene numbers them (its drags apply to them unchanged).
+FIRST_ROLLER = first_roller(caged=True)
 #: The sliced contacts of roller k are 6k + these (indices into the scene's raceways and slice loads): its
 #: raceways, then its pocket's edges P, Q, P_inner, Q_inner; the cage's land contact, if any, is the last.
 INNER, OUTER, POCKET = 0, 1, slice(2, 6)
@@ -188,10 +196,9 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end
         AXIAL_STIFFNESS * bodies[body].mass)) for body in held)
     transverse = bodies[INNER_RING].inertia[0]
     shaft = AxisSpring(INNER_RING, axis, SHAFT_TILT_STIFFNESS, 2 * math.sqrt(SHAFT_TILT_STIFFNESS * transverse))
-    drags = tuple(BodyDrag(FIRST_ROLLER + k, **_drag(coefficients)) for k in range(geometry.rollers)
-                  for coefficients in (roller_drag(spec, geometry, oil),) if coefficients)
-    if spec.lubricant.model == "churning":
-        drags += (BodyDrag(CAGE, angular_quadratic=cage_drag(spec, geometry, oil)),)
+    # the planar model's drags, on the same bodies (:data:`FIRST_ROLLER`); its films are refused (_check_supported)
+    drags = tuple(BodyDrag(drag.body, drag.linear, drag.quadratic, drag.angular, drag.angular_quadratic)
+                  for drag in lubricant_elements(spec, geometry, oil, caged=True))
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
                          raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,), drags=drags,
                          gravity=(0.0, -spec.scenario.gravity, 0.0))
@@ -217,11 +224,6 @@ def _check_supported(spec) -> None:
         if contact.friction_law not in ("erf", "none"):
             raise SpecError(f"contact.{group}.friction_law", contact.friction_law,
                             "the three-dimensional contacts have the erf law (or none) so far (docs/spatial.md)")
-
-
-def _drag(coefficients: dict) -> dict:
-    """The planar model's drag coefficients (:func:`.build.roller_drag`) as a :class:`BodyDrag`'s."""
-    return {name: coefficients.get(name, 0.0) for name in ("linear", "quadratic", "angular", "angular_quadratic")}
 
 
 def _ring(name: str, mass: float, polar: float, width: float, speed: float,
