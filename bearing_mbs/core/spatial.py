@@ -32,6 +32,7 @@ from bearing_mbs.core.spatial_elements import (  # noqa: F401 (the elements are 
     SpinServo,
     TranslationSpring,
     pack,
+    unit_vector,
     vector,
 )
 
@@ -56,19 +57,16 @@ class SpatialBody:
 
     def __post_init__(self):
         owner = f"body {self.name!r}"
-        for field, size in (("inertia", 3), ("position", 3), ("orientation", 4), ("velocity", 3),
-                            ("angular_velocity", 3)):
-            object.__setattr__(self, field, vector(owner, field, getattr(self, field), size))
+        for field in ("inertia", "position", "velocity", "angular_velocity"):
+            object.__setattr__(self, field, vector(owner, field, getattr(self, field), 3))
+        # a unit quaternion (w, x, y, z)
+        object.__setattr__(self, "orientation", unit_vector(owner, "orientation", self.orientation, 4))
         if not self.mass > 0:
             raise ValueError(f"{owner}: mass must be > 0 kg, got {self.mass}")
         moments = self.inertia
         if not all(m > 0 for m in moments) or any(2 * m > sum(moments) * (1 + 1e-12) for m in moments):
             raise ValueError(f"{owner}: inertia {moments} must be three moments > 0, none larger than the sum of "
                              f"the other two")
-        norm = math.sqrt(sum(x * x for x in self.orientation))
-        if abs(norm - 1.0) > UNIT_TOLERANCE:
-            raise ValueError(f"{owner}: orientation {self.orientation} must be a unit quaternion (w, x, y, z), "
-                             f"its norm is {norm:.12g}")
 
 
 @dataclass(frozen=True)

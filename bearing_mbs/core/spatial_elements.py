@@ -21,6 +21,15 @@ def vector(owner: str, field: str, value, size: int) -> tuple[float, ...]:
     return values
 
 
+def unit_vector(owner: str, field: str, value, size: int = 3) -> tuple[float, ...]:
+    """``value`` as :func:`vector` gives it, and of norm 1 within :data:`UNIT_TOLERANCE`, else a ValueError."""
+    values = vector(owner, field, value, size)
+    norm = math.sqrt(sum(x * x for x in values))
+    if abs(norm - 1.0) > UNIT_TOLERANCE:
+        raise ValueError(f"{owner}: {field} {values} must be of norm 1, its norm is {norm:.12g}")
+    return values
+
+
 @dataclass(frozen=True)
 class BodyMoment:
     """A constant moment [N m] on body ``body`` (an index into the scene's bodies), fixed in the body's frame."""
@@ -56,9 +65,7 @@ class TranslationSpring:
 
     def __post_init__(self):
         owner = f"spring on body {self.body}"
-        object.__setattr__(self, "direction", vector(owner, "direction", self.direction, 3))
-        if abs(math.sqrt(sum(x * x for x in self.direction)) - 1.0) > UNIT_TOLERANCE:
-            raise ValueError(f"{owner}: direction {self.direction} must be a unit vector")
+        object.__setattr__(self, "direction", unit_vector(owner, "direction", self.direction))
         if not (self.stiffness > 0 and self.damping >= 0):
             raise ValueError(f"{owner}: stiffness {self.stiffness} N/m must be > 0 and damping {self.damping} N s/m "
                              f">= 0")
@@ -114,13 +121,11 @@ class SlicedRaceway:
 
     def __post_init__(self):
         owner = f"raceway contact {self.name!r}"
-        for field in ("centre", "axis"):
-            object.__setattr__(self, field, vector(owner, field, getattr(self, field), 3))
+        object.__setattr__(self, "centre", vector(owner, "centre", self.centre, 3))
+        object.__setattr__(self, "axis", unit_vector(owner, "axis", self.axis))
         slices = len(self.positions)
         for field in ("positions", "drops"):
             object.__setattr__(self, field, vector(owner, field, getattr(self, field), slices))
-        if abs(math.sqrt(sum(x * x for x in self.axis)) - 1.0) > UNIT_TOLERANCE:
-            raise ValueError(f"{owner}: axis {self.axis} must be a unit vector")
         if self.side not in RACEWAY_SIDES:
             raise ValueError(f"{owner}: side {self.side!r} must be one of {sorted(RACEWAY_SIDES)}")
         if slices == 0 or min(self.drops) < 0:
@@ -174,11 +179,9 @@ class FlangeContact:
 
     def __post_init__(self):
         owner = f"flange contact {self.name!r}"
-        for field in ("point", "normal"):
-            object.__setattr__(self, field, vector(owner, field, getattr(self, field), 3))
+        object.__setattr__(self, "point", vector(owner, "point", self.point, 3))
+        object.__setattr__(self, "normal", unit_vector(owner, "normal", self.normal))
         object.__setattr__(self, "band", vector(owner, "band", self.band, 2))
-        if abs(math.sqrt(sum(x * x for x in self.normal)) - 1.0) > UNIT_TOLERANCE:
-            raise ValueError(f"{owner}: normal {self.normal} must be a unit vector")
         if self.end not in (1, -1):
             raise ValueError(f"{owner}: end {self.end!r} must be +1 or -1")
         if not (0 < self.end_radius and 0 < self.half_length and 0 <= self.band[0] < self.band[1]):
@@ -203,9 +206,7 @@ class SpinServo:
 
     def __post_init__(self):
         owner = f"spin servo on body {self.body}"
-        object.__setattr__(self, "axis", vector(owner, "axis", self.axis, 3))
-        if abs(math.sqrt(sum(x * x for x in self.axis)) - 1.0) > UNIT_TOLERANCE:
-            raise ValueError(f"{owner}: axis {self.axis} must be a unit vector")
+        object.__setattr__(self, "axis", unit_vector(owner, "axis", self.axis))
         if not (math.isfinite(self.speed) and self.gain > 0):
             raise ValueError(f"{owner}: speed {self.speed} rad/s must be finite and gain {self.gain} N m s > 0")
 
@@ -223,9 +224,7 @@ class AxisSpring:
 
     def __post_init__(self):
         owner = f"axis spring on body {self.body}"
-        object.__setattr__(self, "axis", vector(owner, "axis", self.axis, 3))
-        if abs(math.sqrt(sum(x * x for x in self.axis)) - 1.0) > UNIT_TOLERANCE:
-            raise ValueError(f"{owner}: axis {self.axis} must be a unit vector")
+        object.__setattr__(self, "axis", unit_vector(owner, "axis", self.axis))
         if not (self.stiffness > 0 and self.damping >= 0):
             raise ValueError(f"{owner}: stiffness {self.stiffness} N m/rad must be > 0 and damping {self.damping} "
                              f"N m s/rad >= 0")
