@@ -18,8 +18,8 @@ from bearing_mbs.core.rotations import rotation_from_vector
 class SpatialWork(NamedTuple):
     """What a force evaluation fills in: the bodies' rotations (N, 3, 3), the forces on them [N] (world frame) and
     the moments about their centres [N m] (body frame) (N, 3), the raceway contacts' slice loads (C, S) [N] and the
-    power their slices' friction dissipates (C, S) [W], the flange contacts' loads (F,) [N], and the slices' approach speeds an accepted step at this state would latch
-    (C, S) [m/s]; its scratch, the moments and angular velocities in the world frame (N, 3); and the state the
+    power their slices' friction dissipates (C, S) [W], the flange contacts' loads (F,) [N], and the slices' approach
+    speeds an accepted step at this state would latch (C, S) [m/s]; its scratch, the moments and angular velocities in the world frame (N, 3); and the state the
     engines advance once per accepted step, the slices' latched approach speeds (C, S) [m/s]."""
 
     rotation: np.ndarray

@@ -61,7 +61,7 @@ def simulate_spatial_exudyn(scene: SpatialScene, step: float, end_time: float, o
     recorder = _Recorder(mbs, exu, nodes, times, scene, step, forces, progress, stop)
     mbs.SetPostStepUserFunction(recorder)
     mbs.Assemble()
-    recorder.record(0.0, np.array([body.orientation for body in scene.bodies]))  # the initial state
+    recorder.start(np.array([body.orientation for body in scene.bodies]))
 
     settings = exu.SimulationSettings()
     settings.solution.file.write = False
@@ -159,22 +159,30 @@ class _Recorder:
         self.kinds = (kinds.Position, kinds.Velocity, kinds.RotationMatrix, kinds.AngularVelocityLocal)
         self.rows: list[tuple] = []
         self.margin = 1e-6 * (times[1] - times[0]) if times.size > 1 else 0.0
-        self.work, self.power = np.zeros(2), None  # supplied, dissipated [J]; the last step's powers [W]
+        self.work, self.power = np.zeros(2), np.zeros(2)  # supplied, dissipated [J]; the last step's powers [W]
         self.last_time = 0.0
 
-    def record(self, t: float = 0.0, previous: np.ndarray | None = None):
-        """Store the current state at t [s]; the quaternions' signs follow ``previous`` (N, 4), else the last
-        row's."""
+    def start(self, orientations: np.ndarray) -> None:
+        """The initial row (the forces evaluated at the initial state, the quaternions' signs those of
+        ``orientations`` (N, 4))."""
+        self.forces.evaluate(*self._state())
+        self.power = np.array(self.forces.powers[:2])
+        self.record(0.0, orientations)
+
+    def _state(self) -> tuple[np.ndarray, np.ndarray]:
+        """The system's coordinates and velocities now: per node (r, φ) and (ṙ, ω)."""
+        data = self.mbs.systemData
+        return np.asarray(data.GetODE2Coordinates()), np.asarray(data.GetODE2Coordinates_t())
+
+    def record(self, t: float, previous: np.ndarray | None = None):
+        """Store the current state at t [s], with the loads of the forces' evaluation there (the caller's); the
+        quaternions' signs follow ``previous`` (N, 4), else the last row's."""
         position, velocity, matrix, omega = (
             np.array([self.mbs.GetNodeOutput(node, kind) for node in self.nodes]) for kind in self.kinds)
         xyzw = Rotation.from_matrix(matrix.reshape(-1, 3, 3)).as_quat()
         quaternion = np.column_stack([xyzw[:, 3], xyzw[:, :3]])
         reference = previous if previous is not None else self.rows[-1][2]
         quaternion *= np.where(np.sum(quaternion * reference, axis=1) < 0, -1.0, 1.0)[:, None]
-        data = self.mbs.systemData
-        self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())  # the contact loads here
-        if self.power is None:
-            self.power = np.array(self.forces.powers[:2])
         self.rows.append((t, position, quaternion, velocity, omega, *self.forces.loads, self.work.copy(),
                           self.forces.powers[2]))
 
@@ -182,14 +190,12 @@ class _Recorder:
         """After each accepted step: the guard on a finite state, output at the output instants. Returns False to
         stop Exudyn."""
         self.time = t
-        data = mbs.systemData  # six coordinates per node: r and the rotation vector, ṙ and ω
-        states = np.column_stack([np.reshape(data.GetODE2Coordinates(), (-1, 6)),
-                                  np.reshape(data.GetODE2Coordinates_t(), (-1, 6))])
-        finite = np.isfinite(states).all(axis=1)
+        q, q_t = self._state()
+        finite = np.isfinite(np.column_stack([q.reshape(-1, 6), q_t.reshape(-1, 6)])).all(axis=1)  # per node
         if not finite.all():
             return self.stop_with(Failure.NONFINITE, nonfinite_message(self.scene, finite, self.rows[-1][4], t,
                                                                        self.step))
-        self.forces.evaluate(data.GetODE2Coordinates(), data.GetODE2Coordinates_t())
+        self.forces.evaluate(q, q_t)  # once per accepted step: the work, the latches, the output's loads
         latch(self.forces.work)  # the contacts' latched approach speeds, once per accepted step
         power = np.array(self.forces.powers[:2])
         self.work += 0.5 * (t - self.last_time) * (self.power + power)
