@@ -25,6 +25,12 @@ def cross_add(a0, a1, a2, b0, b1, b2, out, row, factor):
 
 
 @numba.njit(cache=True, inline="always")
+def touches(active, roller, ring):
+    """A contact between ``roller`` and ``ring`` (−1: the ground) touches a body that ``active`` (bodies,) marks."""
+    return active[roller] or (ring >= 0 and active[ring])
+
+
+@numba.njit(cache=True, inline="always")
 def in_world(g, position, rotation, point, direction):
     """A point [m] and a direction given in ring g's frame (the world's for the ground, g = −1) in the world frame:
     (p0, p1, p2, d0, d1, d2)."""

@@ -10,8 +10,8 @@ from typing import NamedTuple
 import numba
 import numpy as np
 
-from bearing_mbs.contact.flange import add_flange
-from bearing_mbs.contact.sliced_raceway import add_sliced_raceway
+from bearing_mbs.contact.flange import add_flanges
+from bearing_mbs.contact.sliced_raceway import add_sliced_raceways
 from bearing_mbs.core.rotations import rotation_from_vector
 
 
@@ -19,8 +19,10 @@ class SpatialWork(NamedTuple):
     """What a force evaluation fills in: the bodies' rotations (N, 3, 3), the forces on them [N] (world frame) and
     the moments about their centres [N m] (body frame) (N, 3), the raceway contacts' slice loads (C, S) [N] and the
     power their slices' friction dissipates (C, S) [W], the flange contacts' loads (F,) [N], and the slices' approach
-    speeds an accepted step at this state would latch (C, S) [m/s]; its scratch, the moments and angular velocities in the world frame (N, 3); and the state the
-    engines advance once per accepted step, the slices' latched approach speeds (C, S) [m/s]."""
+    speeds an accepted step at this state would latch (C, S) [m/s]; its scratch, the moments and angular velocities in the world frame (N, 3); the state the
+    engines advance once per accepted step, the slices' latched approach speeds (C, S) [m/s]; and which bodies' elements
+    an evaluation adds (N,) (all; one body's alone where a Jacobian's column wants only the elements that touch it:
+    an element is added when one of its bodies is active, and the others keep their last values)."""
 
     rotation: np.ndarray
     force: np.ndarray
@@ -32,6 +34,7 @@ class SpatialWork(NamedTuple):
     moment_world: np.ndarray
     omega_world: np.ndarray
     latched: np.ndarray
+    active: np.ndarray
 
 
 def new_work(bodies: int, packed) -> SpatialWork:
@@ -40,7 +43,7 @@ def new_work(bodies: int, packed) -> SpatialWork:
     slices = packed.race_positions.shape
     return SpatialWork(np.empty((bodies, 3, 3)), np.empty((bodies, 3)), np.empty((bodies, 3)), np.zeros(slices),
                        np.zeros(slices), np.zeros(packed.flange_roller.size), np.zeros(slices), np.empty((bodies, 3)),
-                       np.empty((bodies, 3)), np.zeros(slices))
+                       np.empty((bodies, 3)), np.zeros(slices), np.ones(bodies, dtype=np.bool_))
 
 
 @numba.njit(cache=True)
@@ -66,16 +69,23 @@ def spatial_forces(packed, position, velocity, omega_body, work):
                                  + rotation[i, j, 2] * omega_body[i, 2])
             work.moment[i, j] = 0.0
     supplied = dissipated = stored = 0.0
+    active = work.active
     for k in range(packed.force_body.size):
+        if not active[packed.force_body[k]]:
+            continue
         for j in range(3):
             force[packed.force_body[k], j] += packed.force[k, j]
             supplied += packed.force[k, j] * velocity[packed.force_body[k], j]
     for k in range(packed.moment_body.size):
+        if not active[packed.moment_body[k]]:
+            continue
         for j in range(3):
             work.moment[packed.moment_body[k], j] += packed.moment[k, j]
             supplied += packed.moment[k, j] * omega_body[packed.moment_body[k], j]
     for k in range(packed.spring_body.size):
         b, e = packed.spring_body[k], packed.spring_direction[k]
+        if not active[b]:
+            continue
         stretch = speed = 0.0
         for j in range(3):
             stretch += (position[b, j] - packed.spring_anchor[k, j]) * e[j]
@@ -87,6 +97,8 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         dissipated += packed.spring_damping[k] * speed * speed
     for k in range(packed.servo_body.size):  # M = g (Ω − ω·a) a, in the world frame
         b, a = packed.servo_body[k], packed.servo_axis[k]
+        if not active[b]:
+            continue
         spin = omega_world[b, 0] * a[0] + omega_world[b, 1] * a[1] + omega_world[b, 2] * a[2]
         torque = packed.servo_gain[k] * (packed.servo_speed[k] - spin)
         for j in range(3):
@@ -94,6 +106,8 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         supplied += torque * spin
     for k in range(packed.axis_body.size):  # M = k (e₃ × a) − c ω⊥, in the world frame
         b, a = packed.axis_body[k], packed.axis_direction[k]
+        if not active[b]:
+            continue
         e0, e1, e2 = rotation[b, 0, 2], rotation[b, 1, 2], rotation[b, 2, 2]
         w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
         along = w0 * e0 + w1 * e1 + w2 * e2
@@ -106,6 +120,8 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         dissipated += damping * (p0 * p0 + p1 * p1 + p2 * p2)
     for k in range(packed.drag_body.size):  # the lubricant's drag: on the centre, and about the body's axis
         b = packed.drag_body[k]
+        if not active[b]:
+            continue
         linear, quadratic, angular, angular_quadratic = (packed.drag[k, 0], packed.drag[k, 1], packed.drag[k, 2],
                                                          packed.drag[k, 3])
         speed = math.sqrt(velocity[b, 0] ** 2 + velocity[b, 1] ** 2 + velocity[b, 2] ** 2)
@@ -115,15 +131,12 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         spin = omega_body[b, 2]
         work.moment[b, 2] -= (angular + angular_quadratic * abs(spin)) * spin
         dissipated += resistance * speed * speed + (angular + angular_quadratic * abs(spin)) * spin * spin
-    for contact in range(packed.race_roller.size):
-        lost, kept = add_sliced_raceway(packed, contact, position, rotation, velocity, omega_world, force,
-                                        moment_world, work.slice_loads, work.slice_friction, work.latched,
-                                        work.latch_next)
-        dissipated, stored = dissipated + lost, stored + kept
-    for contact in range(packed.flange_roller.size):
-        lost, kept = add_flange(packed, contact, position, rotation, velocity, omega_world, force, moment_world,
-                                work.flange_loads)
-        dissipated, stored = dissipated + lost, stored + kept
+    lost, kept = add_sliced_raceways(packed, active, position, rotation, velocity, omega_world, force, moment_world,
+                                     work.slice_loads, work.slice_friction, work.latched, work.latch_next)
+    dissipated, stored = dissipated + lost, stored + kept
+    lost, kept = add_flanges(packed, active, position, rotation, velocity, omega_world, force, moment_world,
+                             work.flange_loads)
+    dissipated, stored = dissipated + lost, stored + kept
     for i in range(bodies):  # the contacts' world moments in the body frame: Rᵀ M
         for j in range(3):
             work.moment[i, j] += (rotation[i, 0, j] * moment_world[i, 0] + rotation[i, 1, j] * moment_world[i, 1]
