@@ -72,9 +72,12 @@ ENGINES = {
     "exudyn rk4": (lambda scene, h, end, dt: simulate_spatial_exudyn(scene, h, end, dt), methods.RK4.order),
     "exudyn generalized_alpha": (lambda scene, h, end, dt: simulate_spatial_exudyn(
         scene, h, end, dt, method=methods.GENERALIZED_ALPHA), methods.GENERALIZED_ALPHA.order),
+    "reference generalized_alpha": (lambda scene, h, end, dt: simulate_spatial_reference(
+        scene, h, end, dt, method=methods.GENERALIZED_ALPHA), methods.GENERALIZED_ALPHA.order),
 }
 #: The coarser of each engine's two steps [s] (the order's asymptotic range).
-COARSE = {"reference rk4": 1e-2, "exudyn rk4": 1e-2, "exudyn generalized_alpha": 1e-3}
+COARSE = {"reference rk4": 1e-2, "exudyn rk4": 1e-2, "exudyn generalized_alpha": 1e-3,
+          "reference generalized_alpha": 1e-3}
 
 
 @pytest.mark.parametrize("engine", ENGINES)
@@ -98,7 +101,7 @@ def test_torque_free_top_matches_its_closed_form_to_the_observed_order(engine):
     assert errors[1] < (1e-7 if order == 4 else 1e-4)
 
 
-@pytest.mark.parametrize("engine", ["reference rk4", "exudyn rk4"])
+@pytest.mark.parametrize("engine", ["reference rk4", "exudyn rk4", "reference generalized_alpha"])
 def test_constant_body_moment_on_a_spinning_roller_matches_its_closed_form(engine):
     run, order = ENGINES[engine]
     radius, length, mass = 0.012, 0.024, 0.085  # a roller of the seed bearing's size [m, m, kg]
@@ -116,7 +119,7 @@ def test_constant_body_moment_on_a_spinning_roller_matches_its_closed_form(engin
                                     moment / (transverse * rate) * (1 - np.cos(rate * t)), np.full(t.size, spin)])
         errors.append(np.abs(series.angular_velocity[:, 0] - expected).max())
     amplitude = abs(moment / (transverse * rate))
-    assert errors[1] < 1e-6 * amplitude
+    assert errors[1] < (1e-6 if order == 4 else 1e-2) * amplitude
     assert abs(np.log2(errors[0] / errors[1]) - order) < 0.3, errors
 
 
@@ -126,6 +129,19 @@ def test_the_engines_agree_on_the_orientation():
     # both fourth order at 5e-3 s: the closed form's error is 6e-8 rad/s; the orientations agree to that scale
     np.testing.assert_allclose(exudyn.orientation, reference.orientation, rtol=0, atol=1e-7)
     np.testing.assert_allclose(exudyn.angular_velocity, reference.angular_velocity, rtol=0, atol=1e-7)
+    np.testing.assert_allclose(np.linalg.norm(reference.orientation, axis=2), 1.0, rtol=0, atol=1e-14)
+
+
+def test_the_engines_generalized_alpha_is_the_same_scheme():
+    """The reference engine's Lie-group generalized-α (body-frame increments, quaternions) against Exudyn's (its
+    rotation-vector Lie-group nodes) on the top, both at ρ∞ = 0.9: the same scheme, so they agree far below their
+    common error against the closed form (3.8e-5 rad/s at 1e-3 s), to Newton's tolerance."""
+    reference = simulate_spatial_reference(top_scene(), 1e-3, END, 0.1, method=methods.GENERALIZED_ALPHA,
+                                           tolerance=1e-12)
+    exudyn = simulate_spatial_exudyn(top_scene(), 1e-3, END, 0.1, method=methods.GENERALIZED_ALPHA)
+    error = np.abs(reference.angular_velocity[:, 0] - top_closed_form(reference.time)).max()
+    assert 1e-5 < error < 1e-4
+    np.testing.assert_allclose(exudyn.angular_velocity, reference.angular_velocity, rtol=0, atol=1e-3 * error)
     np.testing.assert_allclose(np.linalg.norm(reference.orientation, axis=2), 1.0, rtol=0, atol=1e-14)
 
 

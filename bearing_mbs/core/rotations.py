@@ -47,3 +47,22 @@ def rotation_from_vector(a, b, c, out):
     out[2, 0] = -s * b + k * a * c
     out[2, 1] = s * a + k * b * c
     out[2, 2] = 1.0 - k * (a * a + b * b)
+
+
+@numba.njit(cache=True)
+def turned_quaternion(w, x, y, z, a, b, c):
+    """The unit quaternion (w, x, y, z) turned by the rotation vector (a, b, c) [rad] given in its body frame:
+    p ⊗ exp(φ/2) with exp(φ/2) = (cos(θ/2), sin(θ/2) φ/θ), θ = |φ|; returns its four components, normalised."""
+    angle2 = a * a + b * b + c * c
+    if angle2 < SMALL_ANGLE**2:
+        s, cw = 0.5 - angle2 / 48.0, 1.0 - angle2 / 8.0  # sin(θ/2)/θ, cos(θ/2)
+    else:
+        angle = math.sqrt(angle2)
+        s, cw = math.sin(0.5 * angle) / angle, math.cos(0.5 * angle)
+    qa, qb, qc = s * a, s * b, s * c
+    pw = w * cw - x * qa - y * qb - z * qc
+    px = w * qa + x * cw + y * qc - z * qb
+    py = w * qb - x * qc + y * cw + z * qa
+    pz = w * qc + x * qb - y * qa + z * cw
+    norm = math.sqrt(pw * pw + px * px + py * py + pz * pz)
+    return pw / norm, px / norm, py / norm, pz / norm

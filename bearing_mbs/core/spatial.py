@@ -127,7 +127,8 @@ class SpatialSeries(NamedTuple):
     steps taken; ``message``: empty when the run reached its end, else why it stopped (the series then ends at the
     last good output instant) and ``failure`` what kind of stop it was (:class:`~bearing_mbs.core.failures.Failure`:
     ``NONFINITE``, ``SOLVER_FAILED``, ``INTERRUPTED``; ``NONE`` when the run reached its end); wall_time_s: the
-    stepping's wall time [s]."""
+    stepping's wall time [s]; an implicit method's work: the steps it rejected, its Newton iterations, its Jacobians
+    and its force evaluations (zero where an engine does not count them)."""
 
     time: np.ndarray
     position: np.ndarray
@@ -143,6 +144,10 @@ class SpatialSeries(NamedTuple):
     message: str = ""
     wall_time_s: float = 0.0
     failure: Failure = Failure.NONE
+    rejected: int = 0
+    newton_iterations: int = 0
+    jacobians: int = 0
+    evaluations: int = 0
 
     @property
     def success(self) -> bool:

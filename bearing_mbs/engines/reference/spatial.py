@@ -1,24 +1,15 @@
-r"""The reference engine's rigid bodies in three dimensions: the classical Runge–Kutta method on the Newton–Euler
-equations with the orientation as a unit quaternion, projected back onto the unit sphere after each step.
+r"""The reference engine's rigid bodies in three dimensions (:mod:`.spatial_rates`): the classical Runge–Kutta method
+with the orientation as a unit quaternion, projected back onto the unit sphere after each step, or Lie-group
+generalized-α (:mod:`.spatial_alpha`), the implicit method for stiff contacts.
 
-Per body the state is (r, p, ṙ, ω): centre of mass [m], orientation quaternion (scalar first), velocity [m/s],
-body-frame angular velocity [rad/s] (:mod:`bearing_mbs.core.spatial`). The rates are
-
-.. math::
-    \dot p = \tfrac12\, p \otimes (0, \omega), \quad m \ddot r = m g + F, \quad
-    I \dot\omega = M - \omega \times I \omega
-
-with I = diag(I₁, I₂, I₃), F the force (world frame) and M the moment about the centre (body frame) of the scene's
-force elements (Euler's equations). RK4 leaves |p| = 1 to O(h⁵) per step;
-normalising p afterwards is the projection onto that constraint (as the planar engine projects its constraints)
-and keeps the method's fourth order. A Lie-group method (Munthe-Kaas) would stay on the sphere without it, at the
-price of the exponential map's derivative in every stage.
+RK4 leaves |p| = 1 to O(h⁵) per step; normalising p afterwards is the projection onto that constraint (as the planar
+engine projects its constraints) and keeps the method's fourth order. A Lie-group Runge–Kutta method (Munthe-Kaas)
+would stay on the sphere without it, at the price of the exponential map's derivative in every stage.
 """
 
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numba
 import numpy as np
@@ -26,51 +17,26 @@ import numpy as np
 from bearing_mbs.core.failures import Failure
 from bearing_mbs.core.interrupt import StopRequest
 from bearing_mbs.core.progress import ProgressMeter
-from bearing_mbs.core.rotations import rotation_from_quaternion
 from bearing_mbs.core.spatial import SpatialScene, SpatialSeries, check_times, nonfinite_message, stopped_message
-from bearing_mbs.elements.spatial import latch, new_work, spatial_forces
+from bearing_mbs.elements.spatial import latch, new_work
 from bearing_mbs.engines.diagnosis import output_grid
+from bearing_mbs.engines.reference.codes import EVALUATIONS, JACOBIANS, NEWTON_ITERATIONS, REJECTED, STEP_UNDERFLOW
 from bearing_mbs.engines.reference.integrators import equal_steps
+from bearing_mbs.engines.reference.spatial_alpha import alpha_span, alpha_start, new_carry
+from bearing_mbs.engines.reference.spatial_rates import (
+    ANGULAR_VELOCITY,
+    ORIENTATION,
+    POSITION,
+    VELOCITY,
+    SpatialBodies,
+    spatial_rates,
+)
 from bearing_mbs.engines.reference.tableaus import RK4
 from bearing_mbs.engines.run import progress_meter, stop_request, timed_run
+from bearing_mbs.spec import methods
 
-#: The columns of a body's state: r (3), p (4), ṙ (3), ω (3).
-POSITION, ORIENTATION, VELOCITY, ANGULAR_VELOCITY = 0, 3, 7, 10
-
-
-class SpatialBodies(NamedTuple):
-    """The bodies' constants: mass [kg] (N,), principal moments of inertia [kg m²] (N, 3), gravity [m/s²] (3,)."""
-
-    mass: np.ndarray
-    inertia: np.ndarray
-    gravity: np.ndarray
-
-
-@numba.njit(cache=True)
-def spatial_rates(y, bodies, packed, work, rates):
-    """The rates of the states ``y`` (N, 13) into ``rates`` (N, 13): the kinematics and the Newton–Euler equations
-    under the scene's force elements (:func:`bearing_mbs.elements.spatial.spatial_forces`) and gravity. Returns the
-    force elements' (supplied, dissipated) power [W] and stored energy [J]."""
-    count = y.shape[0]
-    for b in range(count):
-        rotation_from_quaternion(y[b, 3], y[b, 4], y[b, 5], y[b, 6], work.rotation[b])
-    powers = spatial_forces(packed, y[:, POSITION:ORIENTATION], y[:, VELOCITY:ANGULAR_VELOCITY],
-                            y[:, ANGULAR_VELOCITY:], work)
-    for b in range(count):
-        w, x, yq, z = y[b, 3], y[b, 4], y[b, 5], y[b, 6]
-        a, c2, c3 = y[b, 10], y[b, 11], y[b, 12]
-        i1, i2, i3 = bodies.inertia[b, 0], bodies.inertia[b, 1], bodies.inertia[b, 2]
-        for k in range(3):
-            rates[b, POSITION + k] = y[b, VELOCITY + k]
-            rates[b, VELOCITY + k] = bodies.gravity[k] + work.force[b, k] / bodies.mass[b]
-        rates[b, 3] = 0.5 * (-x * a - yq * c2 - z * c3)  # ½ p ⊗ (0, ω)
-        rates[b, 4] = 0.5 * (w * a + yq * c3 - z * c2)
-        rates[b, 5] = 0.5 * (w * c2 + z * a - x * c3)
-        rates[b, 6] = 0.5 * (w * c3 + x * c2 - yq * a)
-        rates[b, 10] = (work.moment[b, 0] + (i2 - i3) * c2 * c3) / i1  # Euler's equations
-        rates[b, 11] = (work.moment[b, 1] + (i3 - i1) * c3 * a) / i2
-        rates[b, 12] = (work.moment[b, 2] + (i1 - i2) * a * c2) / i3
-    return powers
+#: The methods that run spatial scenes on this engine.
+SPATIAL_METHODS = (methods.RK4, methods.GENERALIZED_ALPHA)
 
 
 @numba.njit(cache=True)
@@ -104,26 +70,50 @@ def spatial_runge_kutta(y, energy, bodies, packed, work, span, step, a, b):
 
 
 def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float, output_interval: float,
-                               progress: ProgressMeter | None = None, stop: StopRequest | None = None) -> SpatialSeries:
-    """Run ``scene`` from 0 to ``end_time`` [s] with RK4 steps of at most ``step`` [s] (equal steps within each output
-    interval), output every ``output_interval`` [s]; ``progress`` is updated and ``stop`` looked at at every output
-    instant (a set request ends the run there, keeping the output)."""
+                               method: methods.Method = methods.RK4, spectral_radius: float = 0.9,
+                               tolerance: float = 1e-8, progress: ProgressMeter | None = None,
+                               stop: StopRequest | None = None) -> SpatialSeries:
+    """Run ``scene`` from 0 to ``end_time`` [s] with ``method`` (RK4, or generalized-α of high-frequency spectral
+    radius ``spectral_radius`` and Newton tolerance ``tolerance``, :mod:`.spatial_alpha`) in equal steps of at most
+    ``step`` [s] within each output interval, output every ``output_interval`` [s]; ``progress`` is updated and
+    ``stop`` looked at at every output instant (a set request ends the run there, keeping the output)."""
     check_times(step, end_time, output_interval)
+    if method not in SPATIAL_METHODS:
+        raise ValueError(f"method must be one of {[m.name for m in SPATIAL_METHODS]}, got "
+                         f"{getattr(method, 'name', method)!r}")
+    if not 0.0 <= spectral_radius <= 1.0:
+        raise ValueError(f"spectral_radius must be in [0, 1], got {spectral_radius!r}")
+    if not 0.0 < tolerance < 1.0:
+        raise ValueError(f"tolerance must be in (0, 1), got {tolerance!r}")
+    implicit = method == methods.GENERALIZED_ALPHA
     times = output_grid(end_time, output_interval)
     y = np.array([[*b.position, *b.orientation, *b.velocity, *b.angular_velocity] for b in scene.bodies])
     bodies = SpatialBodies(np.array([b.mass for b in scene.bodies]), np.array([b.inertia for b in scene.bodies]),
                            np.array(scene.gravity))
     packed = scene.packed()
     work, rates, energy = new_work(len(scene.bodies), packed), np.empty_like(y), np.zeros(2)
+    carry, counters = new_carry(y), np.zeros(5, dtype=np.int64)
+    if implicit:
+        alpha_start(y, bodies, packed, work, carry)
     states, loads = np.empty((times.size, *y.shape)), np.empty((times.size, *packed.race_positions.shape))
     friction = np.empty_like(loads)
     flange_loads = np.empty((times.size, packed.flange_roller.size))
     works, stored = np.empty((times.size, 2)), np.empty(times.size)
     steps, message, failure, reached = 0, "", Failure.NONE, times.size
     progress, stop = progress_meter(progress), stop_request(stop)
-    with timed_run(progress, end_time, f"{scene.name} (reference rk4, three dimensions)") as clock:
+    with timed_run(progress, end_time, f"{scene.name} (reference {method.name}, three dimensions)") as clock:
         for k in range(times.size):
-            if k > 0:
+            if k > 0 and implicit:
+                taken, status = alpha_span(y, energy, bodies, packed, work, carry, times[k] - times[k - 1], step,
+                                           spectral_radius, tolerance, counters)
+                steps += taken
+                if status == STEP_UNDERFLOW:
+                    message = (f"t = {times[k - 1]:.6g} s: Newton's iteration of generalized-α failed at every step "
+                               f"down to the shortest; likely fix: a step below {step:.3g} s or a spectral radius "
+                               f"below {spectral_radius:g}")
+                    failure, reached = Failure.STEP_UNDERFLOW, k
+                    break
+            elif k > 0:
                 steps += spatial_runge_kutta(y, energy, bodies, packed, work, times[k] - times[k - 1], step, RK4.a,
                                              RK4.b)
             if not np.isfinite(y).all():
@@ -142,4 +132,5 @@ def simulate_spatial_reference(scene: SpatialScene, step: float, end_time: float
     return SpatialSeries(times[:reached], states[:, :, POSITION:ORIENTATION], states[:, :, ORIENTATION:VELOCITY],
                          states[:, :, VELOCITY:ANGULAR_VELOCITY], states[:, :, ANGULAR_VELOCITY:], loads[:reached],
                          friction[:reached], flange_loads[:reached], works[:reached], stored[:reached], steps, message,
-                         clock.wall_time_s, failure)
+                         clock.wall_time_s, failure, int(counters[REJECTED]), int(counters[NEWTON_ITERATIONS]),
+                         int(counters[JACOBIANS]), int(counters[EVALUATIONS]))
