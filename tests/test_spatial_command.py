@@ -14,18 +14,22 @@ import numpy as np
 import pytest
 
 from bearing_mbs.cli import main
+from bearing_mbs.spec import methods
 
 from cases import SCENARIOS
 
 SCENARIO = str(SCENARIOS / "seed_hss_steady.toml")
 
 
-def test_the_command_writes_its_summary_series_and_figures(tmp_path):
+@pytest.mark.parametrize("method", [[], ["--method", methods.RK4.name]])
+def test_the_command_writes_its_summary_series_and_figures(tmp_path, method):
     out = tmp_path / "spatial"
     code = main(["spatial", SCENARIO, "--out", str(out), "--set", "scenario.variant=dry", "--end-time", "3e-4",
-                 "--misalignment", "5e-4", "--crown-radius", "2.0", "--quiet"])
+                 "--misalignment", "5e-4", "--crown-radius", "2.0", "--quiet", *method])
     assert code == 0
     summary = json.loads((out / "summary.json").read_text())
+    assert summary["method"] == (method[-1] if method else methods.GENERALIZED_ALPHA.name)
+    assert summary["step_s"] == (2e-7 if method else 1e-5)
     series = np.load(out / "series.npz")
     assert summary["status"] == "success" and summary["energy_audit_error"] <= summary["energy_audit_tolerance"]
     np.testing.assert_allclose(summary["end_time_s"], 3e-4, rtol=1e-9)
@@ -40,6 +44,10 @@ def test_the_command_writes_its_summary_series_and_figures(tmp_path):
     ([], "cage.model"),  # the lubricated variant's constraint cage: not in three dimensions yet
     (["--set", "scenario.variant=dry", "--slices", "0"], "--slices"),
     (["--set", "scenario.variant=dry", "--engine", "abaqus"], "--engine"),
+    (["--set", "scenario.variant=dry", "--method", methods.DOPRI5.name], "--method"),
+    (["--set", "scenario.variant=dry", "--method", methods.RK4.name, "--spectral-radius", "0.5"], "--spectral-radius"),
+    (["--set", "scenario.variant=dry", "--engine", "exudyn", "--tolerance", "1e-6"], "--tolerance"),
+    (["--set", "scenario.variant=dry", "--spectral-radius", "1.5"], "--spectral-radius"),
 ])
 def test_bad_input_exits_2_naming_the_field_and_leaves_nothing(tmp_path, capsys, arguments, field):
     out = tmp_path / "spatial"

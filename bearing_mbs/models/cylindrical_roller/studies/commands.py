@@ -6,8 +6,10 @@ the command line lends them (shared options, output directory, exit codes, the s
 
 from __future__ import annotations
 
+import math
+
 from bearing_mbs.models.protocol import Command
-from bearing_mbs.spec import SpecError
+from bearing_mbs.spec import SpecError, methods
 
 
 def _stiffness_arguments(parser, cli) -> None:
@@ -150,14 +152,27 @@ def _cage_models(args, cli) -> int:
     return cli.exit_code([row["status"] for row in rows])
 
 
-#: The model's subcommands, in the order ``bearing-mbs --help`` lists them.
+#: ``spatial``'s default step [s] per method: generalized-α's the cost benchmark finds sound on the seed bearing
+#: (benchmarks/bench_spatial.py), RK4's within the dry contacts' explicit limit (docs/spatial.md).
+SPATIAL_STEPS = {methods.GENERALIZED_ALPHA.name: 1e-5, methods.RK4.name: 2e-7}
+
+
 def _spatial_arguments(parser, cli) -> None:
     parser.add_argument("scenario", help="bearing scenario TOML file (a penalty cage, dry contacts: docs/spatial.md)")
     cli.add_output(parser, "output directory: summary.json, series.npz, slice_loads.png, attitudes.png (new or "
                            "empty, or give --overwrite)")
     parser.add_argument("--engine", default="reference", help="reference (default) or exudyn")
-    parser.add_argument("--step", type=float, default=2e-7, metavar="S", help="RK4 step [s] (default 2e-7)")
-    parser.add_argument("--end-time", type=float, default=2e-3, metavar="S", help="simulated time [s] (default 2e-3)")
+    parser.add_argument("--method", default=methods.GENERALIZED_ALPHA.name,
+                        help=f"{methods.GENERALIZED_ALPHA.name} (default: Lie-group, implicit) or {methods.RK4.name}")
+    parser.add_argument("--step", type=float, default=None, metavar="S",
+                        help="step [s] (default: " + ", ".join(f"{step:g} with {name}" for name, step
+                                                               in SPATIAL_STEPS.items()) + ")")
+    parser.add_argument("--spectral-radius", type=float, default=None, metavar="RHO",
+                        help="generalized-α's high-frequency spectral radius (default 0.9)")
+    parser.add_argument("--tolerance", type=float, default=None, metavar="TOL",
+                        help="the reference engine's Newton tolerance for generalized-α (default 1e-6)")
+    parser.add_argument("--end-time", type=float, default=None, metavar="S",
+                        help="simulated time [s] (default: the scenario's end time)")
     parser.add_argument("--output-interval", type=float, default=1e-4, metavar="S",
                         help="output spacing [s] (default 1e-4)")
     parser.add_argument("--slices", type=int, default=10, help="slices per roller contact (default 10)")
@@ -179,12 +194,16 @@ def _spatial(args, cli) -> int:
 
     spec = cli.services.load_spec(args.scenario, args.set)
     directory = cli.output_directory(args)
-    summary = spatial_run.run(spec, directory, engine=args.engine, step=args.step, end_time=args.end_time,
+    step = SPATIAL_STEPS.get(args.method, math.nan) if args.step is None else args.step
+    summary = spatial_run.run(spec, directory, engine=args.engine, method=args.method, step=step,
+                              spectral_radius=args.spectral_radius, tolerance=args.tolerance,
+                              end_time=spec.scenario.end_time if args.end_time is None else args.end_time,
                               output_interval=args.output_interval, slices=args.slices,
                               misalignment=args.misalignment, crown_radius=args.crown_radius,
                               damping_time=args.damping_time, figures=not args.no_figures,
                               progress=cli.progress(args.quiet))
-    print(f"{summary['scenario']} in three dimensions ({summary['engine']}): {summary['status']} at "
+    print(f"{summary['scenario']} in three dimensions ({summary['engine']} {summary['method']}): "
+          f"{summary['status']} at "
           f"{summary['end_time_s']:.4g} s, cage slip {summary['cage_slip_final']:.4g}, largest slice load "
           f"{summary['largest_slice_load_N']:.4g} N, largest skew {summary['largest_skew_rad']:.3g} rad, "
           f"{summary['wall_time_s']:.3g} s wall time")
@@ -194,6 +213,7 @@ def _spatial(args, cli) -> int:
     return cli.exit_code(summary["status"])
 
 
+#: The model's subcommands, in the order ``bearing-mbs --help`` lists them.
 COMMANDS = (
     Command("spatial", "run the bearing in three dimensions (skew, tilt, slice loads, ribs): docs/spatial.md",
             _spatial_arguments, _spatial),

@@ -27,19 +27,35 @@ from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
 from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_slice_loads
 from bearing_mbs.spec import SpecError, methods
 
-#: The engines that run a spatial scene.
+#: The engines that run a spatial scene, and the methods both run.
 ENGINES = {"reference": simulate_spatial_reference, "exudyn": simulate_spatial_exudyn}
+SPATIAL_METHODS = (methods.GENERALIZED_ALPHA, methods.RK4)
+#: Generalized-α's defaults: the setting the cost benchmark finds sound on the seed bearing
+#: (benchmarks/bench_spatial.py).
+DEFAULT_SPECTRAL_RADIUS, DEFAULT_TOLERANCE = 0.9, 1e-6
 #: The energy audit's error, relative to the energy that changed form, below which a run's status is ``success``
 #: (the trapezoid rule of Exudyn's audit reaches a few 1e-4 on the tests' runs: docs/spatial.md).
 AUDIT_TOLERANCE = 1e-3
 
 
-def run(spec, directory: Path, *, engine: str, step: float, end_time: float, output_interval: float, slices: int,
-        misalignment: float, crown_radius: float | None, damping_time: float, figures: bool, progress=None) -> dict:
-    """Build the bearing of ``spec`` in three dimensions, run it, write its outputs into ``directory``; returns the
-    summary."""
+def run(spec, directory: Path, *, engine: str, method: str, step: float, spectral_radius: float | None,
+        tolerance: float | None, end_time: float, output_interval: float, slices: int, misalignment: float,
+        crown_radius: float | None, damping_time: float, figures: bool, progress=None) -> dict:
+    """Build the bearing of ``spec`` in three dimensions, run it with ``method`` (a name of
+    :data:`SPATIAL_METHODS`; generalized-α with ``spectral_radius``, default 0.9, and on the reference engine the
+    Newton ``tolerance``, default 1e-6), write its outputs into ``directory``; returns the summary."""
     if engine not in ENGINES:
         raise SpecError("--engine", engine, f"must be one of {sorted(ENGINES)}")
+    names = {m.name: m for m in SPATIAL_METHODS}
+    if method not in names:
+        raise SpecError("--method", method, f"must be one of {sorted(names)}")
+    implicit = names[method] == methods.GENERALIZED_ALPHA
+    if spectral_radius is not None and not (implicit and 0.0 <= spectral_radius <= 1.0):
+        raise SpecError("--spectral-radius", spectral_radius,
+                        f"must be in [0, 1], with {methods.GENERALIZED_ALPHA.name}")
+    if tolerance is not None and not (implicit and engine == "reference" and 0.0 < tolerance < 1.0):
+        raise SpecError("--tolerance", tolerance, f"must be in (0, 1), with {methods.GENERALIZED_ALPHA.name} on the "
+                                                  "reference engine (Exudyn's Newton keeps its own settings)")
     for option, value in (("--step", step), ("--end-time", end_time), ("--output-interval", output_interval)):
         if not (math.isfinite(value) and value > 0):
             raise SpecError(option, value, "must be a finite number of seconds > 0")
@@ -55,9 +71,14 @@ def run(spec, directory: Path, *, engine: str, step: float, end_time: float, out
     crown = CircularCrown(radius=crown_radius, straight_length=length / 2) if crown_radius else None
     bearing = build_spatial_bearing(spec, slices=slices, damping_time=damping_time, misalignment=misalignment,
                                     crown=crown)
-    series = ENGINES[engine](bearing.scene, step, end_time, output_interval, progress=progress,
+    settings = {"method": names[method]}
+    if implicit:
+        settings["spectral_radius"] = DEFAULT_SPECTRAL_RADIUS if spectral_radius is None else spectral_radius
+        if engine == "reference":
+            settings["tolerance"] = DEFAULT_TOLERANCE if tolerance is None else tolerance
+    series = ENGINES[engine](bearing.scene, step, end_time, output_interval, **settings, progress=progress,
                              stop=active_request())
-    summary = _summary(spec, bearing, series, engine, step, misalignment, slices, crown_radius)
+    summary = _summary(spec, bearing, series, engine, step, misalignment, slices, crown_radius, settings)
     np.savez_compressed(directory / "series.npz", **{name: np.asarray(value) for name, value in
                                                     series._asdict().items() if isinstance(value, np.ndarray)})
     if figures and series.time.size > 1:
@@ -68,7 +89,7 @@ def run(spec, directory: Path, *, engine: str, step: float, end_time: float, out
 
 
 def _summary(spec, bearing, series, engine: str, step: float, misalignment: float, slices: int,
-             crown_radius: float | None) -> dict:
+             crown_radius: float | None, settings: dict) -> dict:
     audit = energy_audit(bearing.scene, series)
     moved = max(float(np.ptp(audit.kinetic)), float(audit.dissipated[-1]), abs(float(audit.supplied[-1])), 1e-300)
     audit_error = float(np.abs(audit.error).max()) / moved
@@ -78,9 +99,11 @@ def _summary(spec, bearing, series, engine: str, step: float, misalignment: floa
         status = INTERRUPTED if series.failure == Failure.INTERRUPTED else FAILED
     skew, tilt = bearing.attitudes(series)
     return {
-        "scenario": spec.scenario.name, "engine": engine, "method": methods.RK4.name, "step_s": step, "slices": slices,
-        "misalignment_rad": misalignment, "crown_radius_m": crown_radius, "status": status, "failure": series.failure.label,
-        "message": series.message,
+        "scenario": spec.scenario.name, "engine": engine, "method": settings["method"].name, "step_s": step,
+        "spectral_radius": settings.get("spectral_radius"), "newton_tolerance": settings.get("tolerance"),
+        "newton_iterations": series.newton_iterations, "jacobians": series.jacobians, "slices": slices,
+        "misalignment_rad": misalignment, "crown_radius_m": crown_radius, "status": status,
+        "failure": series.failure.label, "message": series.message,
         "end_time_s": float(series.time[-1]), "steps": series.steps, "wall_time_s": series.wall_time_s,
         "cage_slip_final": float(bearing.cage_slip(series)[-1]),
         "largest_slice_load_N": float(series.slice_loads.max()) if series.slice_loads.size else 0.0,
