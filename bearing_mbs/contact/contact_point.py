@@ -12,8 +12,13 @@ from __future__ import annotations
 import math
 
 import numba
+import numpy as np
 
 from bearing_mbs.contact.friction import erf_sign
+from bearing_mbs.contact.traction import ehl_traction
+
+#: The traction row of a dry contact: none (the ``erf`` law).
+NO_TRACTION = np.zeros(0)
 
 
 @numba.njit(cache=True, inline="always")
@@ -66,18 +71,26 @@ def relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world):
 
 @numba.njit(cache=True, inline="always")
 def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1, u2, mu, regularisation, force,
-                  moment):
-    """Add to roller b, at arm l, the force ``normal`` · n [N] and the friction μ·load·erf(2|v_s|/v_reg) against the
-    sliding velocity v_s (u without its part along n), with the opposite force on ring g at arm p; moments about the
-    bodies' centres, all in the world frame. Returns the power the friction dissipates, −F_T·v_s >= 0 [W]."""
+                  moment, row, rolling):
+    """Add to roller b, at arm l, the force ``normal`` · n [N] and the friction against the sliding velocity v_s (u
+    without its part along n), with the opposite force on ring g at arm p; moments about the bodies' centres, all in
+    the world frame. The friction is μ·load·erf(2|v_s|/v_reg) (the ``erf`` law), or, given a traction ``row``
+    (:data:`bearing_mbs.contact.traction.TRACTION_COLUMNS`), the lubricated traction of
+    :func:`bearing_mbs.contact.traction.ehl_traction` at the slip |v_s| and the entrainment speed ``rolling`` [m/s],
+    μ then its boundary friction. Returns the power the friction dissipates, −F_T·v_s >= 0 [W]."""
     f0, f1, f2 = normal * n0, normal * n1, normal * n2
     dissipated = 0.0
-    if mu > 0.0:
+    lubricated = row.size > 0
+    if mu > 0.0 or lubricated:
         along = n0 * u0 + n1 * u1 + n2 * u2
         t0, t1, t2 = u0 - along * n0, u1 - along * n1, u2 - along * n2
         speed = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
         if speed > 0.0:
-            friction = -mu * load * erf_sign(speed, regularisation) / speed
+            if lubricated:
+                coefficient = ehl_traction(row, speed, rolling, load, mu, regularisation)[0]
+            else:
+                coefficient = mu * erf_sign(speed, regularisation)
+            friction = -load * coefficient / speed
             f0, f1, f2 = f0 + friction * t0, f1 + friction * t1, f2 + friction * t2
             dissipated = -friction * speed * speed
     force[b, 0] += f0

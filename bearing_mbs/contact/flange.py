@@ -17,7 +17,7 @@ import math
 
 import numba
 
-from bearing_mbs.contact.contact_point import apply_contact, in_world, relative_velocity, touches
+from bearing_mbs.contact.contact_point import NO_TRACTION, apply_contact, in_world, relative_velocity, touches
 from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 
 
@@ -56,7 +56,7 @@ def add_flanges(packed, active, position, rotation, velocity, omega_world, force
         flange_loads[contact] = load
         friction = apply_contact(b, g, l0, l1, l2, p0, p1, p2, a0, a1, a2, load, load, u0, u1, u2,
                                  packed.flange_friction[contact], packed.flange_regularisation_speed[contact], force,
-                                 moment)
+                                 moment, NO_TRACTION, 0.0)
         dissipated += (load - elastic) * rate + friction
         stored += power_law_energy(approach, stiffness, exponent)
     return dissipated, stored

@@ -36,10 +36,43 @@ import math
 
 import numba
 
-from bearing_mbs.contact.contact_point import apply_contact, in_world, relative_velocity, touches
+from bearing_mbs.contact.contact_point import NO_TRACTION, apply_contact, in_world, relative_velocity, touches
 from bearing_mbs.contact.friction import erf_sign, rolling_resistance_moment
 from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 from bearing_mbs.contact.normal import hysteresis_factor, latch_approach_speed, reference_approach_speed
+
+
+@numba.njit(cache=True, inline="always")
+def entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, offset, distance, f0, f1, f2, a0, a1,
+                      a2, position, velocity, omega_world):
+    """The entrainment speed [m/s] of a slice against a cylinder: the mean velocity of the two surfaces relative to
+    the moving contact point P = c − offset·n, in the tangent plane, |(v_b(P) + v_g(P))/2 − Ṗ|_t (the planar
+    kinematics' rolling speed: :func:`bearing_mbs.contact.kinematics.rolling_speed`). c: the slice centre at z
+    along roller b's axis e; n: the unit normal from the cylinder's axis (through its foot point f, along a) at the
+    distance d; l: the roller's arm to P; u: v_b(P) − v_g(P). Ṗ = ċ − offset·ṅ, ṅ the normal's turn as c moves
+    about the axis (the axis' own tilting left out)."""
+    w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
+    c0 = velocity[b, 0] + z * (w1 * e2 - w2 * e1)  # ċ = v_b + ω_b × z e
+    c1 = velocity[b, 1] + z * (w2 * e0 - w0 * e2)
+    c2 = velocity[b, 2] + z * (w0 * e1 - w1 * e0)
+    r0, r1, r2 = c0, c1, c2  # ċ relative to the ring's material point on the axis at f
+    if g >= 0:
+        h0, h1, h2 = f0 - position[g, 0], f1 - position[g, 1], f2 - position[g, 2]
+        v0, v1, v2 = omega_world[g, 0], omega_world[g, 1], omega_world[g, 2]
+        r0 -= velocity[g, 0] + v1 * h2 - v2 * h1
+        r1 -= velocity[g, 1] + v2 * h0 - v0 * h2
+        r2 -= velocity[g, 2] + v0 * h1 - v1 * h0
+    along = r0 * a0 + r1 * a1 + r2 * a2
+    r0, r1, r2 = r0 - along * a0, r1 - along * a1, r2 - along * a2  # ḋ
+    radial = r0 * n0 + r1 * n1 + r2 * n2
+    scale = offset / distance  # Ṗ = ċ − offset·ṅ, ṅ = (ḋ − (ḋ·n) n)/d
+    p0, p1, p2 = c0 - scale * (r0 - radial * n0), c1 - scale * (r1 - radial * n1), c2 - scale * (r2 - radial * n2)
+    m0 = velocity[b, 0] + w1 * l2 - w2 * l1 - 0.5 * u0 - p0  # (v_b(P) + v_g(P))/2 − Ṗ
+    m1 = velocity[b, 1] + w2 * l0 - w0 * l2 - 0.5 * u1 - p1
+    m2 = velocity[b, 2] + w0 * l1 - w1 * l0 - 0.5 * u2 - p2
+    normal = m0 * n0 + m1 * n1 + m2 * n2
+    m0, m1, m2 = m0 - normal * n0, m1 - normal * n1, m2 - normal * n2
+    return math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
 
 
 @numba.njit(cache=True)
@@ -72,6 +105,8 @@ def add_sliced_raceways(packed, active, position, rotation, velocity, omega_worl
         mu, regularisation = packed.race_friction[contact], packed.race_regularisation_speed[contact]
         factor, floor = packed.race_damping_factor[contact], packed.race_approach_floor[contact]
         arm = packed.race_rolling_arm[contact]
+        lubricated = packed.race_lubricated[contact] and not plane
+        d = 0.0
         # the raceway's axis in the world frame
         o0, o1, o2, a0, a1, a2 = in_world(g, position, rotation, packed.race_centre[contact],
                                           packed.race_axis[contact])
@@ -109,8 +144,14 @@ def add_sliced_raceways(packed, active, position, rotation, velocity, omega_worl
                        0.0)
             slice_loads[contact, k] = load
             stored += power_law_energy(interference, coefficient, exponent)
+            row, rolling = NO_TRACTION, 0.0
+            if lubricated:
+                row = packed.race_traction[contact]
+                rolling = entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, s * roller_radius,
+                                            d, o0 + along * a0, o1 + along * a1, o2 + along * a2, a0, a1, a2,
+                                            position, velocity, omega_world)
             slice_friction[contact, k] = apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load, u0,
-                                                       u1, u2, mu, regularisation, force, moment)
+                                                       u1, u2, mu, regularisation, force, moment, row, rolling)
             dissipated += (load - elastic) * rate + slice_friction[contact, k]
             if arm > 0.0:  # about the roller's axis, against its spin relative to the ring
                 spin = omega_world[b, 0] * e0 + omega_world[b, 1] * e1 + omega_world[b, 2] * e2

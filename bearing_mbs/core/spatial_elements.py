@@ -9,6 +9,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from bearing_mbs.contact.traction import N_TRACTION_COLUMNS
+
 #: How far from 1 a given unit vector's or quaternion's norm may be.
 UNIT_TOLERANCE = 1e-9
 
@@ -97,6 +99,9 @@ class SlicedRaceway:
     the planar model's ``erf`` law, with friction_coefficient μ >= 0 and regularisation_speed v_reg [m/s] > 0; a
     rolling_resistance_arm μ_R [m] >= 0 offsets each slice's load against the roller's spin relative to the ring,
     the moment −μ_R Q_k erf(2 ω_rel r/v_reg) about the roller's axis (the planar model's rolling resistance).
+    traction: a lubricated contact's traction row (:data:`bearing_mbs.contact.traction.TRACTION_COLUMNS`, its length
+    the slice width), empty for the ``erf`` law: each slice's friction is then the planar ``ehl`` law's traction at
+    its load, its slip |v_s| and its entrainment speed, μ its boundary friction (cylinders only).
     """
 
     name: str
@@ -118,9 +123,14 @@ class SlicedRaceway:
     damping_factor: float = 0.0
     approach_speed_floor: float = 0.1
     rolling_resistance_arm: float = 0.0
+    traction: tuple[float, ...] = ()
 
     def __post_init__(self):
         owner = f"raceway contact {self.name!r}"
+        if self.traction:
+            object.__setattr__(self, "traction", vector(owner, "traction", self.traction, N_TRACTION_COLUMNS))
+            if self.side == "plane":
+                raise ValueError(f"{owner}: a traction row needs a cylinder, not side {self.side!r}")
         object.__setattr__(self, "centre", vector(owner, "centre", self.centre, 3))
         object.__setattr__(self, "axis", unit_vector(owner, "axis", self.axis))
         slices = len(self.positions)
@@ -275,6 +285,9 @@ def pack(scene) -> SpatialPacked:
         column(races, lambda c: c.damping_time), column(races, lambda c: c.friction_coefficient),
         column(races, lambda c: c.regularisation_speed), column(races, lambda c: c.damping_factor),
         column(races, lambda c: c.approach_speed_floor), column(races, lambda c: c.rolling_resistance_arm),
+        column(races, lambda c: bool(c.traction), bool),
+        np.array([c.traction or (0.0,) * N_TRACTION_COLUMNS for c in races], dtype=float).reshape(
+            len(races), N_TRACTION_COLUMNS),
         *_flange_columns(scene.flanges, column),
         column(scene.servos, lambda d: d.body, int), column(scene.servos, lambda d: d.axis, shape=(3,)),
         column(scene.servos, lambda d: d.speed), column(scene.servos, lambda d: d.gain),
@@ -327,6 +340,8 @@ class SpatialPacked(NamedTuple):
     race_damping_factor: np.ndarray
     race_approach_floor: np.ndarray
     race_rolling_arm: np.ndarray
+    race_lubricated: np.ndarray
+    race_traction: np.ndarray
     flange_roller: np.ndarray
     flange_ring: np.ndarray
     flange_sphere: np.ndarray

@@ -42,6 +42,7 @@ from scipy.spatial.transform import Rotation
 
 from bearing_mbs.contact.line_contact import reduced_modulus, slice_coefficient
 from bearing_mbs.contact.point_contact import hertz_stiffness
+from bearing_mbs.contact.traction import TRACTION_COLUMNS
 from bearing_mbs.core.spatial import (
     AxisSpring,
     BodyDrag,
@@ -186,8 +187,12 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end
                     for flange in _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time))
     load = spec.load
     angle = math.radians(load.angle)
-    flanges += tuple(_inner_rib(spec, geometry, k, end_radius, rib_height, axial_play, damping_time)
-                     for k in range(geometry.rollers))
+    inner_ribs = tuple(_inner_rib(spec, geometry, k, end_radius, rib_height, axial_play, damping_time)
+                       for k in range(geometry.rollers))
+    flanges += inner_ribs
+    if axial_load > 0:  # the tilted ring's rib touches the roller that stands out most, and enters none
+        bodies[INNER_RING] = dataclasses.replace(bodies[INNER_RING], position=(
+            0.0, 0.0, 2 * seated - max(_rib_approach(rib, bodies) for rib in inner_ribs)))
     forces = (BodyForce(INNER_RING, (load.radial * math.cos(angle), load.radial * math.sin(angle), axial_load)),) \
         if load.radial > 0 or axial_load > 0 else ()
     servo = SpinServo(INNER_RING, axis, speed, geometry.inner_ring_inertia / spec.drive.servo_time_constant)
@@ -207,6 +212,20 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end
     return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed), contacts)
 
 
+def _rib_approach(rib: FlangeContact, bodies: list) -> float:
+    """The approach [m] of ``rib``'s roller end to its flange on the ring at the bodies' positions and orientations
+    (:mod:`bearing_mbs.contact.flange`: R_e − (c − o)·a, c the end sphere's centre, o and a the flange's point and
+    normal in the world frame), per unit of the ring's axial shift: the ring's axis is nearly the world's z."""
+    ring, roller = bodies[rib.ring], bodies[rib.roller]
+    w, x, y, z = ring.orientation
+    turn = Rotation.from_quat([x, y, z, w])
+    w, x, y, z = roller.orientation
+    axis = Rotation.from_quat([x, y, z, w]).apply([0.0, 0.0, 1.0])
+    point, normal = np.add(ring.position, turn.apply(rib.point)), turn.apply(rib.normal)
+    centre = np.add(roller.position, rib.end * (rib.half_length - rib.end_radius) * axis)
+    return float((rib.end_radius - np.dot(centre - point, normal)) / normal[2])
+
+
 def _check_supported(spec) -> None:
     """Refuse, naming the field, what the three-dimensional bearing does not model yet."""
     refusals = (("cage.model", spec.cage.model, spec.cage.model == "penalty", "the penalty cage only"),
@@ -221,9 +240,14 @@ def _check_supported(spec) -> None:
             raise SpecError(field, value, f"the three-dimensional bearing models {allowed} so far (docs/spatial.md)")
     for group in (Group.INNER_RACE, Group.OUTER_RACE, Group.POCKET, Group.LAND):
         contact = getattr(spec.contact, group)
-        if contact.friction_law not in ("erf", "none"):
+        raceway = group in (Group.INNER_RACE, Group.OUTER_RACE)
+        if contact.friction_law not in (("erf", "none", "ehl") if raceway else ("erf", "none")):
             raise SpecError(f"contact.{group}.friction_law", contact.friction_law,
-                            "the three-dimensional contacts have the erf law (or none) so far (docs/spatial.md)")
+                            "the three-dimensional contacts have the erf law (or none), and ehl on the raceways, so "
+                            "far (docs/spatial.md)")
+        if contact.friction_law == "ehl" and contact.ehl_rolling_resistance:
+            raise SpecError(f"contact.{group}.ehl_rolling_resistance", True, "the three-dimensional raceways have "
+                            "no hydrodynamic rolling resistance yet (docs/spatial.md): set it false")
 
 
 def _ring(name: str, mass: float, polar: float, width: float, speed: float,
@@ -235,15 +259,19 @@ def _ring(name: str, mass: float, polar: float, width: float, speed: float,
                        angular_velocity=(0.0, 0.0, speed))
 
 
-def _law(spec, geometry: BearingGeometry, group: str, length: float) -> dict:
+def _law(spec, geometry: BearingGeometry, group: str, length: float, slices: int) -> dict:
     """A group's law as a sliced contact's: the whole line's Q = K δ^n over ``length`` [m] with its hysteresis
-    damping, its dry friction and rolling resistance."""
+    damping, its friction (dry, or the ``ehl`` law's traction row for a slice of ``length``/``slices``) and rolling
+    resistance."""
     pair = group_law(spec, geometry, group)
     friction = pair.friction_coefficient if pair.friction_law != "none" else 0.0
+    traction = list(pair.traction)
+    if traction:  # the row of a slice: its load per length is the slice's load over its width
+        traction[TRACTION_COLUMNS.index("length")] = length / slices
     return {"coefficient": float(slice_coefficient(pair.stiffness, length)), "exponent": pair.exponent,
             "friction_coefficient": friction, "regularisation_speed": pair.regularisation_speed,
             "damping_factor": pair.damping_factor, "approach_speed_floor": pair.approach_speed_floor,
-            "rolling_resistance_arm": pair.rolling_resistance_arm}
+            "rolling_resistance_arm": pair.rolling_resistance_arm, "traction": tuple(traction)}
 
 
 def _slices(length: float, slices: int, damping_time: float, crown=None) -> dict:
@@ -262,11 +290,11 @@ def _roller_contacts(spec, geometry: BearingGeometry, k: int, slices: int, dampi
     contacts = [
         SlicedRaceway(f"roller{k}-inner_race", ring=INNER_RING, centre=(0, 0, 0), axis=(0, 0, 1),
                       raceway_radius=geometry.inner_race_diameter / 2, side="inner",
-                      **_law(spec, geometry, Group.INNER_RACE, length), **common),
+                      **_law(spec, geometry, Group.INNER_RACE, length, slices), **common),
         SlicedRaceway(f"roller{k}-outer_race", ring=-1, centre=(0, 0, 0), axis=(0, 0, 1),
                       raceway_radius=geometry.outer_race_diameter / 2, side="outer",
-                      **_law(spec, geometry, Group.OUTER_RACE, length), **common)]
-    pocket = _law(spec, geometry, Group.POCKET, length)
+                      **_law(spec, geometry, Group.OUTER_RACE, length, slices), **common)]
+    pocket = _law(spec, geometry, Group.POCKET, length, slices)
     for label, point in geometry.pocket_points(k).items():  # an edge: a line along the axis, a cylinder of radius 0
         contacts.append(SlicedRaceway(f"roller{k}-pocket_{label}", ring=CAGE, centre=(*point, 0.0), axis=(0, 0, 1),
                                       raceway_radius=0.0, side="inner", **pocket, **common))
@@ -277,7 +305,7 @@ def _land(spec, geometry: BearingGeometry, slices: int, damping_time: float) -> 
     """The cage's land contact (none for a roller-guided cage): the cage in the outer ring's land bore, or the inner
     ring's land in the cage's bore."""
     guidance, width = spec.bearing.cage_guidance, spec.bearing.cage_width
-    common = {**_law(spec, geometry, Group.LAND, width), **_slices(width, slices, damping_time),
+    common = {**_law(spec, geometry, Group.LAND, width, slices), **_slices(width, slices, damping_time),
               "centre": (0, 0, 0), "axis": (0, 0, 1), "side": "outer"}
     if guidance == "outer_land":
         return (SlicedRaceway("cage-outer_land", roller=CAGE, ring=-1, roller_radius=geometry.cage_outer_radius,
