@@ -48,6 +48,7 @@ def test_the_command_writes_its_summary_series_and_figures(tmp_path, method):
     (["--set", "scenario.variant=dry", "--method", methods.RK4.name, "--spectral-radius", "0.5"], "--spectral-radius"),
     (["--set", "scenario.variant=dry", "--engine", "exudyn", "--tolerance", "1e-6"], "--tolerance"),
     (["--set", "scenario.variant=dry", "--spectral-radius", "1.5"], "--spectral-radius"),
+    (["--set", "scenario.variant=dry", "--axial-load", "-1"], "--axial-load"),
 ])
 def test_bad_input_exits_2_naming_the_field_and_leaves_nothing(tmp_path, capsys, arguments, field):
     out = tmp_path / "spatial"

@@ -178,6 +178,8 @@ def _spatial_arguments(parser, cli) -> None:
     parser.add_argument("--slices", type=int, default=10, help="slices per roller contact (default 10)")
     parser.add_argument("--misalignment", type=float, default=0.0, metavar="RAD",
                         help="the inner ring's tilt about x [rad] (default 0)")
+    parser.add_argument("--axial-load", type=float, default=0.0, metavar="N",
+                        help="axial load on the inner ring along +z [N], carried by the ribs (default 0)")
     parser.add_argument("--crown-radius", type=float, default=None, metavar="M",
                         help="the rollers' circular crown radius [m] over their outer quarters (default: straight)")
     parser.add_argument("--damping-time", type=float, default=0.0, metavar="S",
@@ -199,7 +201,8 @@ def _spatial(args, cli) -> int:
                               spectral_radius=args.spectral_radius, tolerance=args.tolerance,
                               end_time=spec.scenario.end_time if args.end_time is None else args.end_time,
                               output_interval=args.output_interval, slices=args.slices,
-                              misalignment=args.misalignment, crown_radius=args.crown_radius,
+                              misalignment=args.misalignment, axial_load=args.axial_load,
+                              crown_radius=args.crown_radius,
                               damping_time=args.damping_time, figures=not args.no_figures,
                               progress=cli.progress(args.quiet))
     print(f"{summary['scenario']} in three dimensions ({summary['engine']} {summary['method']}): "

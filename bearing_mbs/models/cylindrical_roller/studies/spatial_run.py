@@ -40,7 +40,8 @@ AUDIT_TOLERANCE = 1e-3
 
 def run(spec, directory: Path, *, engine: str, method: str, step: float, spectral_radius: float | None,
         tolerance: float | None, end_time: float, output_interval: float, slices: int, misalignment: float,
-        crown_radius: float | None, damping_time: float, figures: bool, progress=None) -> dict:
+        crown_radius: float | None, damping_time: float, figures: bool, axial_load: float = 0.0,
+        progress=None) -> dict:
     """Build the bearing of ``spec`` in three dimensions, run it with ``method`` (a name of
     :data:`SPATIAL_METHODS`; generalized-α with ``spectral_radius``, default 0.9, and on the reference engine the
     Newton ``tolerance``, default 1e-6), write its outputs into ``directory``; returns the summary."""
@@ -63,6 +64,8 @@ def run(spec, directory: Path, *, engine: str, method: str, step: float, spectra
         raise SpecError("--slices", slices, "must be an integer >= 1")
     if not math.isfinite(misalignment):
         raise SpecError("--misalignment", misalignment, "must be a finite angle [rad]")
+    if not (math.isfinite(axial_load) and axial_load >= 0):
+        raise SpecError("--axial-load", axial_load, "must be a finite force >= 0 N (along +z, onto the ribs)")
     if not (math.isfinite(damping_time) and damping_time >= 0):
         raise SpecError("--damping-time", damping_time, "must be a finite time >= 0 s")
     if crown_radius is not None and not crown_radius > 0:
@@ -70,7 +73,7 @@ def run(spec, directory: Path, *, engine: str, method: str, step: float, spectra
     length = spec.bearing.roller_length
     crown = CircularCrown(radius=crown_radius, straight_length=length / 2) if crown_radius else None
     bearing = build_spatial_bearing(spec, slices=slices, damping_time=damping_time, misalignment=misalignment,
-                                    crown=crown)
+                                    crown=crown, axial_load=axial_load)
     settings = {"method": names[method]}
     if implicit:
         settings["spectral_radius"] = DEFAULT_SPECTRAL_RADIUS if spectral_radius is None else spectral_radius
@@ -79,6 +82,7 @@ def run(spec, directory: Path, *, engine: str, method: str, step: float, spectra
     series = ENGINES[engine](bearing.scene, step, end_time, output_interval, **settings, progress=progress,
                              stop=active_request())
     summary = _summary(spec, bearing, series, engine, step, misalignment, slices, crown_radius, settings)
+    summary["axial_load_N"] = axial_load
     np.savez_compressed(directory / "series.npz", **{name: np.asarray(value) for name, value in
                                                     series._asdict().items() if isinstance(value, np.ndarray)})
     if figures and series.time.size > 1:
