@@ -54,6 +54,7 @@ from bearing_mbs.models.cylindrical_roller.spatial import (
     INNER,
     INNER_RING,
     OUTER,
+    RIM_ANGLES,
     build_spatial_bearing,
 )
 from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_slice_loads
@@ -75,7 +76,7 @@ def test_the_scene_holds_what_the_bearing_needs():
     assert len(scene.bodies) == 2 + rollers  # inner ring, cage, rollers; the outer ring is the ground
     assert len(scene.raceways) == CONTACTS_PER_ROLLER * rollers  # inner and outer raceway, four pocket edges
     assert all(len(contact.positions) == 8 for contact in scene.raceways)
-    assert len(scene.flanges) == 3 * rollers  # the outer ring's two ribs, the inner ring's one (NJ)
+    assert len(scene.flanges) == 3 * len(RIM_ANGLES) * rollers  # the outer ring's two ribs, the inner ring's one (NJ)
     assert len(scene.servos) == 1 and len(scene.forces) == 1 and len(scene.springs) == 2
     assert len(scene.axis_springs) == 1  # the shaft holding the inner ring's axis
     assert scene.gravity[1] < 0
@@ -253,15 +254,19 @@ def test_the_engines_agree_on_skew_cage_slip_and_the_largest_slice_load():
 
 
 def test_the_rib_loads_are_each_rollers_own():
-    """The scene lists the outer ring's two ribs per roller, then the inner ring's one per roller: each roller's
-    three rib loads must come out in its own row."""
+    """The scene lists the outer ring's two ribs per roller, then the inner ring's one per roller, each with its
+    points on the roller's edge: each roller's three rib loads must sum its own points and come out in its own row."""
     bearing = build_spatial_bearing(spec(), slices=2)
     rollers = bearing.geometry.rollers
     names = [flange.name for flange in bearing.scene.flanges]
-    loads = np.arange(len(names), dtype=float)[None, :]  # a load per flange: its index
-    ribs = bearing.rib_loads(type("Series", (), {"flange_loads": loads, "time": np.zeros(1)}))
     for k in range(rollers):
-        assert [names[int(i)] for i in ribs[0, k]] == [f"roller{k}-rib+", f"roller{k}-rib-", f"roller{k}-inner_rib"]
+        for rib in ("rib+", "rib-", "inner_rib"):
+            marked = np.array([[name.startswith(f"roller{k}-{rib}") and name[len(f"roller{k}-{rib}"):].isdigit()
+                                for name in names]], dtype=float)  # 1 on this rib's points
+            ribs = bearing.rib_loads(type("Series", (), {"flange_loads": marked, "time": np.zeros(1)}))
+            expected = np.zeros((rollers, 3))
+            expected[k, ("rib+", "rib-", "inner_rib").index(rib)] = len(RIM_ANGLES)
+            np.testing.assert_array_equal(ribs[0], expected)
 
 
 def test_the_hydrodynamic_rolling_resistance_is_refused_by_field():

@@ -169,7 +169,10 @@ class FlangeContact:
     line through ``point`` along ``normal`` (the ring's axis: the flange's radial extent); outside it there is no
     contact. The load is Q = K δ^n (1 + n τ δ̇/δ) >= 0 at approach δ > 0: stiffness K [N/m^n] > 0 (Hertz's, for a
     sphere on a plane, with n = 3/2), damping_time τ [s] >= 0; friction μ Q erf(2|v_s|/v_reg) against the sliding
-    velocity, friction_coefficient μ >= 0, regularisation_speed v_reg [m/s] > 0.
+    velocity, friction_coefficient μ >= 0, regularisation_speed v_reg [m/s] > 0. rim_radius ρ [m] >= 0 and rim_angle
+    φ [rad]: a sphere on a flat end's rounded rim (R_e its corner radius), its centre ρ off the axis at the angle φ
+    from the roller's body axis 1 (:mod:`bearing_mbs.contact.flange`); ρ = 0: on the axis. edge [m] >= 0: the band's
+    edges rounded over this width (the load fades out beyond them; 0: sharp).
     """
 
     name: str
@@ -186,9 +189,16 @@ class FlangeContact:
     damping_time: float = 0.0
     friction_coefficient: float = 0.0
     regularisation_speed: float = 1e-2
+    rim_radius: float = 0.0
+    rim_angle: float = 0.0
+    edge: float = 0.0
 
     def __post_init__(self):
         owner = f"flange contact {self.name!r}"
+        if not (self.rim_radius >= 0 and math.isfinite(self.rim_radius) and math.isfinite(self.rim_angle)
+                and self.edge >= 0 and math.isfinite(self.edge)):
+            raise ValueError(f"{owner}: rim_radius {self.rim_radius} m and edge {self.edge} m must be finite and >= 0, "
+                             f"rim_angle {self.rim_angle} rad finite")
         object.__setattr__(self, "point", vector(owner, "point", self.point, 3))
         object.__setattr__(self, "normal", unit_vector(owner, "normal", self.normal))
         object.__setattr__(self, "band", vector(owner, "band", self.band, 2))
@@ -304,7 +314,9 @@ def _flange_columns(flanges, column) -> tuple:
             column(flanges, lambda c: c.point, shape=(3,)), column(flanges, lambda c: c.normal, shape=(3,)),
             column(flanges, lambda c: c.band, shape=(2,)), column(flanges, lambda c: c.stiffness),
             column(flanges, lambda c: c.exponent), column(flanges, lambda c: c.damping_time),
-            column(flanges, lambda c: c.friction_coefficient), column(flanges, lambda c: c.regularisation_speed))
+            column(flanges, lambda c: c.friction_coefficient), column(flanges, lambda c: c.regularisation_speed),
+            column(flanges, lambda c: (c.rim_radius * math.cos(c.rim_angle), c.rim_radius * math.sin(c.rim_angle)),
+                   shape=(2,)), column(flanges, lambda c: c.edge))
 
 
 class SpatialPacked(NamedTuple):
@@ -354,6 +366,8 @@ class SpatialPacked(NamedTuple):
     flange_damping_time: np.ndarray
     flange_friction: np.ndarray
     flange_regularisation_speed: np.ndarray
+    flange_rim: np.ndarray
+    flange_edge: np.ndarray
     servo_body: np.ndarray
     servo_axis: np.ndarray
     servo_speed: np.ndarray

@@ -7,7 +7,7 @@ radial plane the planar model's (x, y).
 
 * Rollers against the raceways: sliced line contacts (:mod:`bearing_mbs.contact.sliced_raceway`) with the group's
   line law as the whole roller's, Q = K δ^n (Palmgren's K, or the one given), cut into ``slices`` straight slices;
-  the group's dry friction law on each slice.
+  the group's friction law on each slice (dry, or the ``ehl`` traction with the slice's load per length).
 * Rollers in their pockets: the same contact against the pocket's four edges (:meth:`.BearingGeometry.pocket_points`,
   lines along the axis in the cage's frame, as the planar penalty cage's points), with the pocket group's law.
 * The cage on its land, where it is land-guided: its outer surface in the outer ring's land bore, or the inner
@@ -15,10 +15,13 @@ radial plane the planar model's (x, y).
   holds the cage's axial position (nothing else would: its pockets' end walls are not modelled).
 * Flanges: an NJ-type arrangement, the outer ring's two ribs (planes z = ±(L_w/2 + ``axial_play``/2), their band
   from the outer raceway down by ``rib_height`` × D_w) and the inner ring's rib at −z (its band from the inner
-  raceway up), against the rollers' spherical ends (radius ``end_radius`` × D_pw), Hertz's law for steel, the
-  raceways' friction. The ribs are flat, so a spherical end meets them on the roller's axis: they reach past the
-  pitch circle (0.6 D_w by default), where real ribs are lower and inclined so that the contact sits at their
-  height.
+  raceway up), against the rollers' flat ends with a rounded edge (corner radius ``corner_radius`` × D_w): each rib
+  meets the edge at its :data:`RIM_POINTS` points, spinning with the roller, those within its band
+  (:mod:`bearing_mbs.contact.flange`), each a Hertz sphere-on-plane contact of the corner radius for steel with the
+  raceways' boundary friction coefficient (dry: their μ). The edge on the rib's side resists the roller's skew and
+  tilt to first order, as real roller ends guided by ribs do; the points stand for the arc of the edge within the
+  rib (our choice: 24, 15° apart, about eight within a rib of 0.3 D_w at a time), and the rib's edges are rounded
+  over the corner radius, so that the points load and unload continuously as they spin across them.
 * The inner ring: driven about the bearing's axis by a spin servo of the planar model's gain (the ring's inertia over
   ``drive.servo_time_constant``), the radial load at its angle, a stiff axial spring (the shaft's location).
 * The contacts carry the groups' hysteresis damping (Lankarani–Nikravesh and its family, with an approach speed
@@ -27,8 +30,8 @@ radial plane the planar model's (x, y).
   model's. Aligned, the two models are the same bearing, and a run reproduces the planar one
   (tests/test_spatial_bearing.py).
 
-Not yet in three dimensions (refused here with the field that asks for them): EHL traction, the land and pocket
-films, the constraint and full-complement cages, the gear train, load and speed profiles.
+Not yet in three dimensions (refused here with the field that asks for them): the land and pocket films, the
+hydrodynamic rolling resistance, the constraint and full-complement cages, the gear train, load and speed profiles.
 """
 
 from __future__ import annotations
@@ -129,32 +132,35 @@ class SpatialBearing(NamedTuple):
         return 1.0 - series.angular_velocity[:, CAGE, 2] / self.epicyclic_cage_speed
 
     def rib_loads(self, series) -> np.ndarray:
-        """Each roller's rib loads [N], (T, Z, 3): the outer ring's rib at +z, at −z, the inner ring's."""
-        rollers = self.geometry.rollers
-        outer = series.flange_loads[:, :2 * rollers].reshape(series.time.size, rollers, 2)
-        return np.concatenate([outer, series.flange_loads[:, 2 * rollers:, None]], axis=2)
+        """Each roller's rib loads [N], (T, Z, 3): the outer ring's rib at +z, at −z, the inner ring's (each the sum
+        over its points on the roller's edge, :data:`RIM_ANGLES`)."""
+        rollers, points, count = self.geometry.rollers, len(RIM_ANGLES), series.time.size
+        outer = series.flange_loads[:, :2 * rollers * points].reshape(count, rollers, 2, points).sum(axis=3)
+        inner = series.flange_loads[:, 2 * rollers * points:].reshape(count, rollers, points).sum(axis=2)
+        return np.concatenate([outer, inner[:, :, None]], axis=2)
 
 
-def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end_radius: float = 0.5,
-                          rib_height: float = 0.6, axial_play: float = 2e-4, misalignment: float = 0.0,
+def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, corner_radius: float = 0.05,
+                          rib_height: float = 0.3, axial_play: float = 2e-4, misalignment: float = 0.0,
                           axial_load: float = 0.0, crown=None) -> SpatialBearing:
     """The bearing of ``spec`` (this model's :class:`~.spec.Spec`) in three dimensions (the module's docstring):
     ``slices`` per roller contact (integer >= 1), ``damping_time`` τ [s] >= 0 of every contact (stiffness-proportional
-    damping on top of the groups' laws; 0: their laws alone, the planar model's), the rollers' end
-    spheres' radius ``end_radius`` × D_pw > 0, the ribs' height ``rib_height`` × D_w in (0.5, 1) (flat ribs meet a
-    spherical end on the roller's axis, so they must reach the pitch circle), the rollers' total
+    damping on top of the groups' laws; 0: their laws alone, the planar model's), the rollers' end edges' corner
+    radius ``corner_radius`` × D_w in (0, 0.25), the ribs' height ``rib_height`` × D_w in (``corner_radius``, 0.5]
+    (they must reach the edge's points), the rollers' total
     axial play between the ribs ``axial_play`` [m] >= 0; the inner ring's ``misalignment`` [rad], its axis tilted
     about the world x axis (in the plane of a load along y) and held there by a stiff shaft (:class:`AxisSpring`);
     an ``axial_load`` [N] >= 0 on the inner ring along +z, carried by its rib and the outer ring's (an NJ-type
     arrangement; without it the inner ring's axial position is held by a stiff spring); the rollers' ``crown``, a
     profile of :mod:`.quasistatic.profiles` (None: straight)."""
     _check_supported(spec)
-    if not (isinstance(slices, int) and slices >= 1 and damping_time >= 0 and end_radius > 0
-            and 0.5 < rib_height < 1 and axial_play >= 0 and math.isfinite(misalignment) and axial_load >= 0):
-        raise SpecError("spatial", (slices, damping_time, end_radius, rib_height, axial_play, misalignment,
+    if not (isinstance(slices, int) and slices >= 1 and damping_time >= 0 and 0 < corner_radius < 0.25
+            and corner_radius < rib_height <= 0.5 and axial_play >= 0 and math.isfinite(misalignment)
+            and axial_load >= 0):
+        raise SpecError("spatial", (slices, damping_time, corner_radius, rib_height, axial_play, misalignment,
                                     axial_load),
-                        "slices must be an integer >= 1, damping_time >= 0 s, end_radius > 0, rib_height in (0.5, 1), "
-                        "axial_play >= 0 m, misalignment finite and axial_load >= 0 N")
+                        "slices must be an integer >= 1, damping_time >= 0 s, corner_radius in (0, 0.25), rib_height "
+                        "in (corner_radius, 0.5], axial_play >= 0 m, misalignment finite and axial_load >= 0 N")
     geometry = BearingGeometry.from_spec(spec.bearing)
     geometry.require_cage(spec.bearing)
     oil = operating_oil(spec.lubricant)
@@ -184,11 +190,11 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end
                      for contact in _roller_contacts(spec, geometry, k, slices, damping_time, crown))
     raceways += _land(spec, geometry, slices, damping_time)
     flanges = tuple(flange for k in range(geometry.rollers)
-                    for flange in _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time))
+                    for flange in _ribs(spec, geometry, k, corner_radius, rib_height, axial_play, damping_time))
     load = spec.load
     angle = math.radians(load.angle)
-    inner_ribs = tuple(_inner_rib(spec, geometry, k, end_radius, rib_height, axial_play, damping_time)
-                       for k in range(geometry.rollers))
+    inner_ribs = tuple(rib for k in range(geometry.rollers)
+                       for rib in _inner_rib(spec, geometry, k, corner_radius, rib_height, axial_play, damping_time))
     flanges += inner_ribs
     if axial_load > 0:  # the tilted ring's rib touches the roller that stands out most, and enters none
         bodies[INNER_RING] = dataclasses.replace(bodies[INNER_RING], position=(
@@ -214,15 +220,21 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, end
 
 def _rib_approach(rib: FlangeContact, bodies: list) -> float:
     """The approach [m] of ``rib``'s roller end to its flange on the ring at the bodies' positions and orientations
-    (:mod:`bearing_mbs.contact.flange`: R_e − (c − o)·a, c the end sphere's centre, o and a the flange's point and
-    normal in the world frame), per unit of the ring's axial shift: the ring's axis is nearly the world's z."""
+    (:mod:`bearing_mbs.contact.flange`: R_e − (c − o)·a, c the sphere's centre on the end's rim, o and a the flange's
+    point and normal in the world frame), per unit of the ring's axial shift: the ring's axis is nearly the world's z.
+    Only a point within the flange's band counts (the others: −inf)."""
     ring, roller = bodies[rib.ring], bodies[rib.roller]
     w, x, y, z = ring.orientation
     turn = Rotation.from_quat([x, y, z, w])
     w, x, y, z = roller.orientation
-    axis = Rotation.from_quat([x, y, z, w]).apply([0.0, 0.0, 1.0])
     point, normal = np.add(ring.position, turn.apply(rib.point)), turn.apply(rib.normal)
-    centre = np.add(roller.position, rib.end * (rib.half_length - rib.end_radius) * axis)
+    centre = np.add(roller.position, Rotation.from_quat([x, y, z, w]).apply(
+        [rib.rim_radius * math.cos(rib.rim_angle), rib.rim_radius * math.sin(rib.rim_angle),
+         rib.end * (rib.half_length - rib.end_radius)]))
+    contact = centre - rib.end_radius * normal
+    radial = (contact - point) - np.dot(contact - point, normal) * normal
+    if not rib.band[0] <= np.linalg.norm(radial) <= rib.band[1]:
+        return -math.inf
     return float((rib.end_radius - np.dot(centre - point, normal)) / normal[2])
 
 
@@ -316,35 +328,42 @@ def _land(spec, geometry: BearingGeometry, slices: int, damping_time: float) -> 
     return ()
 
 
-def _ribs(spec, geometry: BearingGeometry, k: int, end_radius: float, rib_height: float, axial_play: float,
+#: The points of a roller end's edge that meet a rib: angles [rad] about the roller's axis, fixed in the roller.
+RIM_POINTS = 24
+RIM_ANGLES = tuple(2 * math.pi * k / RIM_POINTS for k in range(RIM_POINTS))
+
+
+def _ribs(spec, geometry: BearingGeometry, k: int, corner_radius: float, rib_height: float, axial_play: float,
           damping_time: float) -> list:
-    """Roller k's two ends against the outer ring's ribs."""
+    """Roller k's two ends' edges against the outer ring's ribs, at :data:`RIM_ANGLES`."""
     bearing = spec.bearing
     roller, ring = bearing.roller_material, bearing.ring_material
-    radius = end_radius * geometry.pitch_diameter
+    radius = corner_radius * geometry.roller_diameter
     modulus = reduced_modulus(roller.youngs_modulus, roller.poisson_ratio, ring.youngs_modulus, ring.poisson_ratio)
     outer = group_law(spec, geometry, Group.OUTER_RACE)
     friction = outer.friction_coefficient if outer.friction_law != "none" else 0.0
     race = geometry.outer_race_diameter / 2
     half = geometry.roller_length / 2
-    return [FlangeContact(f"roller{k}-rib{'+' if end > 0 else '-'}", roller=FIRST_ROLLER + k, ring=-1, end=end,
+    return [FlangeContact(f"roller{k}-rib{'+' if end > 0 else '-'}{index}", roller=FIRST_ROLLER + k, ring=-1, end=end,
                           half_length=half, end_radius=radius, point=(0.0, 0.0, end * (half + axial_play / 2)),
                           normal=(0.0, 0.0, -end), band=(race - rib_height * geometry.roller_diameter, race),
                           stiffness=hertz_stiffness((1 / radius, 1 / radius, 0.0, 0.0), modulus),
                           damping_time=damping_time, friction_coefficient=friction,
-                          regularisation_speed=outer.regularisation_speed)
-            for end in (1, -1)]
+                          regularisation_speed=outer.regularisation_speed,
+                          rim_radius=geometry.roller_diameter / 2 - radius, rim_angle=angle, edge=radius)
+            for end in (1, -1) for index, angle in enumerate(RIM_ANGLES)]
 
 
-def _inner_rib(spec, geometry: BearingGeometry, k: int, end_radius: float, rib_height: float, axial_play: float,
-               damping_time: float) -> FlangeContact:
-    """Roller k's end at −z against the inner ring's rib (an NJ-type bearing): pushed along +z, the inner ring takes
-    the rollers against the outer ring's rib at +z."""
-    outer = _ribs(spec, geometry, k, end_radius, rib_height, axial_play, damping_time)[1]  # the rib at −z
+def _inner_rib(spec, geometry: BearingGeometry, k: int, corner_radius: float, rib_height: float, axial_play: float,
+               damping_time: float) -> list:
+    """Roller k's end at −z against the inner ring's rib (an NJ-type bearing), at :data:`RIM_ANGLES`: pushed along +z,
+    the inner ring takes the rollers against the outer ring's rib at +z."""
     race = geometry.inner_race_diameter / 2
     inner = group_law(spec, geometry, Group.INNER_RACE)
-    return dataclasses.replace(
-        outer, name=f"roller{k}-inner_rib", ring=INNER_RING, normal=(0.0, 0.0, 1.0),
+    return [dataclasses.replace(
+        outer, name=f"roller{k}-inner_rib{index}", ring=INNER_RING, normal=(0.0, 0.0, 1.0),
         band=(race, race + rib_height * geometry.roller_diameter),
         friction_coefficient=inner.friction_coefficient if inner.friction_law != "none" else 0.0,
         regularisation_speed=inner.regularisation_speed)
+        for index, outer in enumerate(_ribs(spec, geometry, k, corner_radius, rib_height, axial_play,
+                                            damping_time)[len(RIM_ANGLES):])]  # the rib at −z
