@@ -56,16 +56,32 @@ def add_flanges(packed, active, position, rotation, velocity, omega_world, force
     """Add the forces [N] and moments [N m] (world frame, about the bodies' centres) of the flange contacts that
     touch an ``active`` body to ``force`` and ``moment`` and each one's load [N] into ``flange_loads[contact]``; the
     state as :func:`bearing_mbs.contact.sliced_raceway.add_sliced_raceways` takes it (and, as there, the loop over
-    the contacts inside this call); returns the power they dissipate [W] and the energy they store [J]."""
+    the contacts inside this call); returns the power they dissipate [W] and the energy they store [J]. The points of
+    one rim (``flange_group``: their count at the first, 0 at the others) are passed over together when the rim's
+    lowest point along the flange's normal, its centre circle's radius ρ times |e₃ × a| below the axis, cannot reach
+    the flange."""
     dissipated = stored = 0.0
+    skip_until = 0
     for contact in range(packed.flange_roller.size):
         if not touches(active, packed.flange_roller[contact], packed.flange_ring[contact]):
+            continue
+        flange_loads[contact] = 0.0
+        if contact < skip_until:  # a point of a rim that cannot reach its flange
             continue
         b, g = packed.flange_roller[contact], packed.flange_ring[contact]
         o0, o1, o2, a0, a1, a2 = in_world(g, position, rotation, packed.flange_point[contact],
                                           packed.flange_normal[contact])
-        flange_loads[contact] = 0.0
         z, radius = packed.flange_sphere[contact], packed.flange_end_radius[contact]
+        group = packed.flange_group[contact]
+        if group > 1:  # the first of a rim's points: none reaches the flange if the rim's lowest point cannot
+            e0, e1, e2 = rotation[b, 0, 2], rotation[b, 1, 2], rotation[b, 2, 2]
+            tilt = e0 * a0 + e1 * a1 + e2 * a2
+            reach = radius + packed.flange_group_radius[contact] * math.sqrt(max(1.0 - tilt * tilt, 0.0)) - (
+                (position[b, 0] + z * e0 - o0) * a0 + (position[b, 1] + z * e1 - o1) * a1
+                + (position[b, 2] + z * e2 - o2) * a2)
+            if reach <= 0.0:
+                skip_until = contact + group
+                continue
         # the sphere's centre from the roller's centre, R_b (ρ cos φ, ρ sin φ, z_s): on the axis, or a point of the
         # end's rim that spins with the roller
         along, across = packed.flange_rim[contact, 0], packed.flange_rim[contact, 1]

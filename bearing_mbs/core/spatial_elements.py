@@ -316,7 +316,27 @@ def _flange_columns(flanges, column) -> tuple:
             column(flanges, lambda c: c.exponent), column(flanges, lambda c: c.damping_time),
             column(flanges, lambda c: c.friction_coefficient), column(flanges, lambda c: c.regularisation_speed),
             column(flanges, lambda c: (c.rim_radius * math.cos(c.rim_angle), c.rim_radius * math.sin(c.rim_angle)),
-                   shape=(2,)), column(flanges, lambda c: c.edge))
+                   shape=(2,)), column(flanges, lambda c: c.edge), *_rim_groups(flanges))
+
+
+def _rim_groups(flanges) -> tuple[np.ndarray, np.ndarray]:
+    """The runs of consecutive flange contacts that are points of one rim (the same roller end, flange and rim
+    radius > 0): each run's length at its first contact (0 at the others, 1 outside a run), and its rim radius."""
+    group, radius = np.ones(len(flanges), dtype=int), np.zeros(len(flanges))
+    first = 0
+    for k in range(1, len(flanges) + 1):
+        if k < len(flanges) and flanges[k].rim_radius > 0 and _same_rim(flanges[first], flanges[k]):
+            group[k] = 0
+            continue
+        group[first], radius[first] = k - first, flanges[first].rim_radius
+        first = k
+    return group, radius
+
+
+def _same_rim(a, b) -> bool:
+    """Two flange contacts are points of one rim: all but their rim angles (and names) alike."""
+    return (a.roller, a.ring, a.end, a.half_length, a.end_radius, a.point, a.normal, a.rim_radius) == (
+        b.roller, b.ring, b.end, b.half_length, b.end_radius, b.point, b.normal, b.rim_radius)
 
 
 class SpatialPacked(NamedTuple):
@@ -368,6 +388,8 @@ class SpatialPacked(NamedTuple):
     flange_regularisation_speed: np.ndarray
     flange_rim: np.ndarray
     flange_edge: np.ndarray
+    flange_group: np.ndarray
+    flange_group_radius: np.ndarray
     servo_body: np.ndarray
     servo_axis: np.ndarray
     servo_speed: np.ndarray
