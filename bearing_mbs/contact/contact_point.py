@@ -93,6 +93,14 @@ def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1
             friction = -load * coefficient / speed
             f0, f1, f2 = f0 + friction * t0, f1 + friction * t1, f2 + friction * t2
             dissipated = -friction * speed * speed
+    apply_force(b, g, l0, l1, l2, p0, p1, p2, f0, f1, f2, force, moment)
+    return dissipated
+
+
+@numba.njit(cache=True, inline="always")
+def apply_force(b, g, l0, l1, l2, p0, p1, p2, f0, f1, f2, force, moment):
+    """Add the force f [N] to roller b at arm l and its opposite to ring g (−1: the ground) at arm p, with their
+    moments about the bodies' centres, all in the world frame."""
     force[b, 0] += f0
     force[b, 1] += f1
     force[b, 2] += f2
@@ -102,4 +110,3 @@ def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1
         force[g, 1] -= f1
         force[g, 2] -= f2
         cross_add(p0, p1, p2, f0, f1, f2, moment, g, -1.0)
-    return dissipated

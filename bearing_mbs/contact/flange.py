@@ -27,7 +27,7 @@ import numba
 from bearing_mbs.contact.contact_point import (
     NO_TRACTION,
     apply_contact,
-    cross_add,
+    apply_force,
     in_world,
     relative_velocity,
     touches,
@@ -115,16 +115,8 @@ def add_flanges(packed, active, position, rotation, velocity, omega_world, force
         if slope != 0.0:  # over the rounded edge: the radial force −(∂w/∂d) E of the stored energy w E, through the
             # sphere's centre (the energy depends on the centre alone)
             radial = -slope * energy / distance
-            f0, f1, f2 = radial * d0, radial * d1, radial * d2
-            force[b, 0] += f0
-            force[b, 1] += f1
-            force[b, 2] += f2
-            cross_add(x0, x1, x2, f0, f1, f2, moment, b, 1.0)
-            if g >= 0:
-                force[g, 0] -= f0
-                force[g, 1] -= f1
-                force[g, 2] -= f2
-                cross_add(p0 + radius * a0, p1 + radius * a1, p2 + radius * a2, f0, f1, f2, moment, g, -1.0)
+            apply_force(b, g, x0, x1, x2, p0 + radius * a0, p1 + radius * a1, p2 + radius * a2, radial * d0,
+                        radial * d1, radial * d2, force, moment)
         dissipated += (load - elastic) * rate + friction
         stored += weight * energy
     return dissipated, stored

@@ -137,7 +137,8 @@ def _residual(y, bodies, packed, work, carry, slope_q, slope_v, out):
 @numba.njit(cache=True)
 def _form_inverse(y, bodies, packed, work, carry, slope_q, slope_v, counters):
     """Newton's matrix ∂R/∂x at the iterate by forward differences, body by body with only the elements that touch
-    the body (the module's docstring), inverted into ``carry.inverse``."""
+    the body (the module's docstring), inverted into ``carry.inverse``; False when it is singular (the step is then
+    retried shorter)."""
     n = y.shape[0]
     x, base, shifted, active = carry.unknown, carry.residual, carry.shifted, work.active
     matrix = np.empty((6 * n, 6 * n))

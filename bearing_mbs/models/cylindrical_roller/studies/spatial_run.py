@@ -20,16 +20,15 @@ from bearing_mbs.core.interrupt import active_request
 from bearing_mbs.core.result import FAILED, INTERRUPTED, SUCCESS, SUSPECT
 from bearing_mbs.core.spatial import energy_audit
 from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
-from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
+from bearing_mbs.engines.reference.spatial import SPATIAL_METHODS, simulate_spatial_reference
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models.cylindrical_roller.quasistatic import CircularCrown
 from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
 from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_slice_loads
 from bearing_mbs.spec import SpecError, methods
 
-#: The engines that run a spatial scene, and the methods both run.
+#: The engines that run a spatial scene (both run the same methods).
 ENGINES = {"reference": simulate_spatial_reference, "exudyn": simulate_spatial_exudyn}
-SPATIAL_METHODS = (methods.GENERALIZED_ALPHA, methods.RK4)
 #: Generalized-α's defaults: the setting the cost benchmark finds sound on the seed bearing
 #: (benchmarks/bench_spatial.py).
 DEFAULT_SPECTRAL_RADIUS, DEFAULT_TOLERANCE = 0.9, 1e-6
