@@ -36,7 +36,7 @@ def test_the_command_writes_its_summary_series_and_figures(tmp_path, method):
     np.testing.assert_allclose(summary["largest_slice_load_N"], series["slice_loads"].max(), rtol=1e-12)
     assert series["orientation"].shape[1] == 17  # inner ring, cage, 15 rollers
     assert 0 < summary["largest_tilt_rad"] < 1e-3  # the misaligned ring tilts its loaded rollers
-    for figure in ("slice_loads.png", "attitudes.png"):
+    for figure in ("slice_loads.png", "attitudes.png", "ribs_smearing.png"):
         assert (out / figure).stat().st_size > 10_000
 
 

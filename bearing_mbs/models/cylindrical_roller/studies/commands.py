@@ -159,8 +159,8 @@ SPATIAL_STEPS = {methods.GENERALIZED_ALPHA.name: 1e-5, methods.RK4.name: 2e-7}
 
 def _spatial_arguments(parser, cli) -> None:
     parser.add_argument("scenario", help="bearing scenario TOML file (a penalty cage, dry contacts: docs/spatial.md)")
-    cli.add_output(parser, "output directory: summary.json, series.npz, slice_loads.png, attitudes.png (new or "
-                           "empty, or give --overwrite)")
+    cli.add_output(parser, "output directory: summary.json, series.npz, slice_loads.png, attitudes.png, "
+                           "ribs_smearing.png (new or empty, or give --overwrite)")
     parser.add_argument("--engine", default="reference", help="reference (default) or exudyn")
     parser.add_argument("--method", default=methods.GENERALIZED_ALPHA.name,
                         help=f"{methods.GENERALIZED_ALPHA.name} (default: Lie-group, implicit) or {methods.RK4.name}")

@@ -2,7 +2,7 @@
 
 Writes ``summary.json`` (the run's settings, status, cost and outcome: cage slip, the largest slice and rib loads,
 the rollers' largest skew and tilt, the energy audit's error), ``series.npz`` (the spatial series) and, unless asked
-not to, ``slice_loads.png`` and ``attitudes.png``. The status is ``success`` when the run reached its end and its
+not to, ``slice_loads.png``, ``attitudes.png`` and ``ribs_smearing.png``. The status is ``success`` when the run reached its end and its
 energy audit closed (within :data:`AUDIT_TOLERANCE` of the energy that changed form), ``suspect`` when it reached
 its end but the audit did not, ``failed`` when it stopped early, ``interrupted`` on a stop request; the output
 computed is written in every case.
@@ -24,7 +24,7 @@ from bearing_mbs.engines.reference.spatial import SPATIAL_METHODS, simulate_spat
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models.cylindrical_roller.quasistatic import CircularCrown
 from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
-from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_slice_loads
+from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_ribs_and_smearing, plot_slice_loads
 from bearing_mbs.spec import SpecError, methods
 
 #: The engines that run a spatial scene (both run the same methods).
@@ -87,6 +87,7 @@ def run(spec, directory: Path, *, engine: str, method: str, step: float, spectra
     if figures and series.time.size > 1:
         plot_slice_loads(bearing, series, directory / "slice_loads.png")
         plot_attitudes(bearing, series, directory / "attitudes.png")
+        plot_ribs_and_smearing(bearing, series, directory / "ribs_smearing.png")
     write_json(directory / "summary.json", summary)
     return summary
 
