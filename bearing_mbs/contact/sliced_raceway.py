@@ -28,6 +28,11 @@ roller's material point at P_k against the ring's, in the tangent plane:
 F_T = −μ Q_k erf(2|v_s|/v_reg) v_s/|v_s| (the planar model's ``erf`` law, :mod:`.friction`, on the speed), at P_k. A
 rolling-resistance arm μ_R adds the moment −μ_R Q_k erf(2 ω_rel r/v_reg) about the roller's axis against its spin
 relative to the ring, ω_rel = (ω_b − ω_g)·e₃ (the planar model's, :func:`.friction.rolling_resistance_moment`).
+A lubricated slice (a traction row) takes the planar ``ehl`` law's traction at its slip |v_s| and entrainment speed u
+(the mean surface velocity relative to the moving contact point, along ê_u) and, with it on, the planar hydrodynamic
+rolling resistance f = F_R erf(2u/v_reg): the force (1/2 − w) f ê_u at P and the couple (1 − w) r f about n × ê_u on
+the roller (n the normal force's direction on it, w = s r/d the ring's share of the contact point's motion), their
+opposites on the ring (:func:`.traction.inlet_shear_reaction`; power −f u).
 """
 
 from __future__ import annotations
@@ -36,18 +41,27 @@ import math
 
 import numba
 
-from bearing_mbs.contact.contact_point import NO_TRACTION, apply_contact, in_world, relative_velocity, touches
+from bearing_mbs.contact.contact_point import (
+    NO_TRACTION,
+    apply_contact,
+    apply_force,
+    in_world,
+    relative_velocity,
+    touches,
+)
 from bearing_mbs.contact.friction import erf_sign, rolling_resistance_moment
 from bearing_mbs.contact.line_contact import power_law_energy, power_law_force
 from bearing_mbs.contact.normal import hysteresis_factor, latch_approach_speed, reference_approach_speed
+from bearing_mbs.contact.traction import inlet_shear_reaction, rolling_force
 
 
 @numba.njit(cache=True, inline="always")
 def entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, offset, distance, f0, f1, f2, a0, a1,
                       a2, position, velocity, omega_world):
-    """The entrainment speed [m/s] of a slice against a cylinder: the mean velocity of the two surfaces relative to
-    the moving contact point P = c − offset·n, in the tangent plane, |(v_b(P) + v_g(P))/2 − Ṗ|_t (the planar
-    kinematics' rolling speed: :func:`bearing_mbs.contact.kinematics.rolling_speed`). c: the slice centre at z
+    """The entrainment speed [m/s] of a slice against a cylinder and its direction (a unit vector, zero at rest): the
+    mean velocity of the two surfaces relative to the moving contact point P = c − offset·n, in the tangent plane,
+    |(v_b(P) + v_g(P))/2 − Ṗ|_t (the planar kinematics' rolling speed:
+    :func:`bearing_mbs.contact.kinematics.rolling_speed`). c: the slice centre at z
     along roller b's axis e; n: the unit normal from the cylinder's axis (through its foot point f, along a) at the
     distance d; l: the roller's arm to P; u: v_b(P) − v_g(P). Ṗ = ċ − offset·ṅ, ṅ the normal's turn as c moves
     about the axis (the axis' own tilting left out)."""
@@ -72,7 +86,10 @@ def entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, o
     m2 = velocity[b, 2] + w0 * l1 - w1 * l0 - 0.5 * u2 - p2
     normal = m0 * n0 + m1 * n1 + m2 * n2
     m0, m1, m2 = m0 - normal * n0, m1 - normal * n1, m2 - normal * n2
-    return math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
+    speed = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
+    if speed == 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    return speed, m0 / speed, m1 / speed, m2 / speed
 
 
 @numba.njit(cache=True)
@@ -144,14 +161,32 @@ def add_sliced_raceways(packed, active, position, rotation, velocity, omega_worl
                        0.0)
             slice_loads[contact, k] = load
             stored += power_law_energy(interference, coefficient, exponent)
-            row, rolling = NO_TRACTION, 0.0
+            row, rolling, t0, t1, t2 = NO_TRACTION, 0.0, 0.0, 0.0, 0.0
             if lubricated:
                 row = packed.race_traction[contact]
-                rolling = entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, s * roller_radius,
-                                            d, o0 + along * a0, o1 + along * a1, o2 + along * a2, a0, a1, a2,
-                                            position, velocity, omega_world)
+                rolling, t0, t1, t2 = entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2,
+                                                        s * roller_radius, d, o0 + along * a0, o1 + along * a1,
+                                                        o2 + along * a2, a0, a1, a2, position, velocity, omega_world)
             slice_friction[contact, k] = apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, s * load, load, u0,
                                                        u1, u2, mu, regularisation, force, moment, row, rolling)
+            if lubricated:  # the hydrodynamic rolling resistance (with it on): the planar law along the entrainment
+                resisting = rolling_force(row, rolling, load) * erf_sign(rolling, regularisation)
+                if resisting > 0.0:
+                    tangential, couple = inlet_shear_reaction(resisting, s * roller_radius / d, roller_radius)
+                    apply_force(b, g, l0, l1, l2, p0, p1, p2, tangential * t0, tangential * t1, tangential * t2,
+                                force, moment)
+                    couple *= s  # about the planar pair's n × t, n the normal force's direction on the roller
+                    c0 = couple * (n1 * t2 - n2 * t1)
+                    c1 = couple * (n2 * t0 - n0 * t2)
+                    c2 = couple * (n0 * t1 - n1 * t0)
+                    moment[b, 0] += c0
+                    moment[b, 1] += c1
+                    moment[b, 2] += c2
+                    if g >= 0:
+                        moment[g, 0] -= c0
+                        moment[g, 1] -= c1
+                        moment[g, 2] -= c2
+                    dissipated += resisting * rolling  # its power is −f u
             dissipated += (load - elastic) * rate + slice_friction[contact, k]
             if arm > 0.0:  # about the roller's axis, against its spin relative to the ring
                 spin = omega_world[b, 0] * e0 + omega_world[b, 1] * e1 + omega_world[b, 2] * e2

@@ -31,7 +31,7 @@ radial plane the planar model's (x, y).
   (tests/test_spatial_bearing.py).
 
 Not yet in three dimensions (refused here with the field that asks for them): the land and pocket films, the
-hydrodynamic rolling resistance, the constraint and full-complement cages, the gear train, load and speed profiles.
+constraint and full-complement cages, the gear train, load and speed profiles.
 """
 
 from __future__ import annotations
@@ -257,9 +257,6 @@ def _check_supported(spec) -> None:
             raise SpecError(f"contact.{group}.friction_law", contact.friction_law,
                             "the three-dimensional contacts have the erf law (or none), and ehl on the raceways, so "
                             "far (docs/spatial.md)")
-        if contact.friction_law == "ehl" and contact.ehl_rolling_resistance:
-            raise SpecError(f"contact.{group}.ehl_rolling_resistance", True, "the three-dimensional raceways have "
-                            "no hydrodynamic rolling resistance yet (docs/spatial.md): set it false")
 
 
 def _ring(name: str, mass: float, polar: float, width: float, speed: float,
