@@ -24,7 +24,11 @@ from bearing_mbs.engines.reference.spatial import SPATIAL_METHODS, simulate_spat
 from bearing_mbs.io.json import write_json
 from bearing_mbs.models.cylindrical_roller.quasistatic import CircularCrown
 from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
-from bearing_mbs.models.cylindrical_roller.spatial_figures import plot_attitudes, plot_ribs_and_smearing, plot_slice_loads
+from bearing_mbs.models.cylindrical_roller.spatial_figures import (
+    plot_attitudes,
+    plot_ribs_and_smearing,
+    plot_slice_loads,
+)
 from bearing_mbs.spec import SpecError, methods
 
 #: The engines that run a spatial scene (both run the same methods).
