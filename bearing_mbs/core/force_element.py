@@ -63,7 +63,7 @@ JACOBIAN_ARGUMENTS_WITH_PAIR_STATE = ("t", "q", "v", "latched", "pair_out", "for
 
 def no_potential_energy(parameters, position: np.ndarray, pair_output: np.ndarray) -> None:
     """For kinds whose work is counted as supplied or dissipated power: they store no energy."""
-    return None
+    return
 
 
 @dataclass(frozen=True)

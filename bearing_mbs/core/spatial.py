@@ -27,6 +27,7 @@ from bearing_mbs.core.spatial_elements import (  # noqa: F401 (the elements are 
     BodyForce,
     BodyMoment,
     FlangeContact,
+    LandFilm,
     SlicedRaceway,
     SpatialPacked,
     SpinServo,
@@ -73,8 +74,8 @@ class SpatialBody:
 class SpatialScene:
     """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
     springs that hold a centre along a direction, sliced roller–raceway (and roller–pocket) contacts, roller
-    end–flange contacts, spin servos, springs that hold an axis, lubricant drags, and gravity g [m/s²] in the
-    world frame."""
+    end–flange contacts, spin servos, springs that hold an axis, lubricant drags, land films, and gravity g [m/s²] in
+    the world frame."""
 
     name: str
     bodies: tuple[SpatialBody, ...]
@@ -86,6 +87,7 @@ class SpatialScene:
     servos: tuple[SpinServo, ...] = ()
     axis_springs: tuple[AxisSpring, ...] = ()
     drags: tuple[BodyDrag, ...] = ()
+    films: tuple[LandFilm, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
@@ -95,7 +97,8 @@ class SpatialScene:
         object.__setattr__(self, "gravity", vector(owner, "gravity", self.gravity, 3))
         count = len(self.bodies)
         for what, items in (("moment", self.moments), ("force", self.forces), ("spring", self.springs),
-                            ("servo", self.servos), ("axis spring", self.axis_springs), ("drag", self.drags)):
+                            ("servo", self.servos), ("axis spring", self.axis_springs), ("drag", self.drags),
+                            ("land film", self.films)):
             for item in items:
                 if not 0 <= item.body < count:
                     raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
@@ -110,7 +113,7 @@ class SpatialScene:
     def has_forces(self) -> bool:
         """It has force elements beyond gravity (the engines' force kernel runs only then)."""
         return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges or self.servos
-                    or self.axis_springs or self.drags)
+                    or self.axis_springs or self.drags or self.films)
 
     def packed(self) -> SpatialPacked:
         """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""

@@ -267,6 +267,27 @@ class BodyDrag:
             raise ValueError(f"drag on body {self.body}: its coefficients must be >= 0, got {self}")
 
 
+@dataclass(frozen=True)
+class LandFilm:
+    """An oil film between body ``body`` and a bore of the ground about the world's z axis through ``centre`` (x, y)
+    [m] (the planar model's cage–land film): a short journal bearing of radius [m], length [m], radial clearance [m]
+    and the oil's dynamic viscosity [Pa s], all > 0, on the body's centre in the (x, y) plane and its spin about z
+    (:mod:`bearing_mbs.elements.journal_bearings`' law; the body's tilt in the bore is not in it)."""
+
+    body: int
+    centre: tuple[float, float]
+    radius: float
+    length: float
+    clearance: float
+    viscosity: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "centre", vector(f"land film on body {self.body}", "centre", self.centre, 2))
+        if not min(self.radius, self.length, self.clearance, self.viscosity) > 0:
+            raise ValueError(f"land film on body {self.body}: radius, length, clearance and viscosity must be > 0, "
+                             f"got {self}")
+
+
 def pack(scene) -> SpatialPacked:
     """The force elements of a :class:`~bearing_mbs.core.spatial.SpatialScene` as the arrays that compiled code reads."""
     bodies = scene.bodies
@@ -304,7 +325,9 @@ def pack(scene) -> SpatialPacked:
         column(scene.axis_springs, lambda a: a.body, int), column(scene.axis_springs, lambda a: a.axis, shape=(3,)),
         column(scene.axis_springs, lambda a: a.stiffness), column(scene.axis_springs, lambda a: a.damping),
         column(scene.drags, lambda d: d.body, int),
-        column(scene.drags, lambda d: (d.linear, d.quadratic, d.angular, d.angular_quadratic), shape=(4,)))
+        column(scene.drags, lambda d: (d.linear, d.quadratic, d.angular, d.angular_quadratic), shape=(4,)),
+        column(scene.films, lambda f: f.body, int), column(scene.films, lambda f: f.centre, shape=(2,)),
+        column(scene.films, lambda f: (f.radius, f.length, f.clearance, f.viscosity), shape=(4,)))
 
 
 def _flange_columns(flanges, column) -> tuple:
@@ -400,3 +423,6 @@ class SpatialPacked(NamedTuple):
     axis_damping: np.ndarray
     drag_body: np.ndarray
     drag: np.ndarray
+    film_body: np.ndarray
+    film_centre: np.ndarray
+    film: np.ndarray

@@ -99,16 +99,23 @@ def _tables(films, j):
             films.map_tangential[j, :rows, :columns, :shares, :directions], films.map_linear[j, :rows, :columns])
 
 
+@register_jitable
+def held_eccentricity(e_x, e_y, clearance):
+    """(e_x, e_y [m], ε) of an eccentricity (e_x, e_y) [m] in a clearance [m], held at :data:`LARGEST_ECCENTRICITY`
+    beyond it."""
+    eps = math.sqrt(e_x * e_x + e_y * e_y) / clearance
+    if eps > LARGEST_ECCENTRICITY:
+        return e_x * LARGEST_ECCENTRICITY / eps, e_y * LARGEST_ECCENTRICITY / eps, LARGEST_ECCENTRICITY
+    return e_x, e_y, eps
+
+
 @numba.njit(cache=True)
 def film_load(films, j, q, v):
     """(F_x, F_y, T) [N, N, N m] of item j on its body."""
     i = 3 * films.body[j]
     radius, length, clearance, viscosity = films.geometry[j, 0], films.geometry[j, 1], films.geometry[j, 2], \
         films.geometry[j, 3]
-    e_x, e_y = q[i] - films.centre[j, 0], q[i + 1] - films.centre[j, 1]
-    eps = math.sqrt(e_x * e_x + e_y * e_y) / clearance
-    if eps > LARGEST_ECCENTRICITY:
-        e_x, e_y, eps = e_x * LARGEST_ECCENTRICITY / eps, e_y * LARGEST_ECCENTRICITY / eps, LARGEST_ECCENTRICITY
+    e_x, e_y, eps = held_eccentricity(q[i] - films.centre[j, 0], q[i + 1] - films.centre[j, 1], clearance)
     speed = v[i + 2]
     if films.source[j] == 0:
         f_x, f_y = short_bearing_force(e_x, e_y, v[i], v[i + 1], speed, radius, length, clearance, viscosity)

@@ -61,7 +61,6 @@ def add_forces_twin(loads, t, q, v, forces, power):
 @numba.njit(cache=True, inline="always")
 def add_jacobian(parameters, t, q, v, force_position, force_velocity):
     """Nothing: a profile load depends on time alone."""
-    pass
 
 
 ELEMENT = ForceElement(name="loads", item_type=Load, parameters=LoadArrays, pack=pack, add_forces=add_forces,

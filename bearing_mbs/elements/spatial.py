@@ -1,6 +1,6 @@
 """The force elements of a spatial scene, summed per body (compiled; both engines call it): world forces, body-fixed
-moments, springs that hold a centre along a direction or an axis, spin servos, sliced raceway and pocket contacts
-(:mod:`bearing_mbs.contact.sliced_raceway`) and flange contacts (:mod:`bearing_mbs.contact.flange`)."""
+moments, springs that hold a centre along a direction or an axis, spin servos, drags, land films, sliced raceway and
+pocket contacts (:mod:`bearing_mbs.contact.sliced_raceway`) and flange contacts (:mod:`bearing_mbs.contact.flange`)."""
 
 from __future__ import annotations
 
@@ -13,6 +13,8 @@ import numpy as np
 from bearing_mbs.contact.flange import add_flanges
 from bearing_mbs.contact.sliced_raceway import add_sliced_raceways
 from bearing_mbs.core.rotations import rotation_from_vector
+from bearing_mbs.elements.journal_bearings import held_eccentricity
+from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
 
 
 class SpatialWork(NamedTuple):
@@ -131,6 +133,21 @@ def spatial_forces(packed, position, velocity, omega_body, work):
         spin = omega_body[b, 2]
         work.moment[b, 2] -= (angular + angular_quadratic * abs(spin)) * spin
         dissipated += resistance * speed * speed + (angular + angular_quadratic * abs(spin)) * spin * spin
+    for k in range(packed.film_body.size):  # land films: the planar short journal bearing in the (x, y) plane
+        b = packed.film_body[k]
+        if not active[b]:
+            continue
+        radius, length, clearance, viscosity = packed.film[k, 0], packed.film[k, 1], packed.film[k, 2], packed.film[k, 3]
+        e_x, e_y, eps = held_eccentricity(position[b, 0] - packed.film_centre[k, 0],
+                                          position[b, 1] - packed.film_centre[k, 1], clearance)
+        speed = omega_world[b, 2]
+        f_x, f_y = short_bearing_force(e_x, e_y, velocity[b, 0], velocity[b, 1], speed, radius, length, clearance,
+                                       viscosity)
+        torque = short_bearing_torque(eps, speed, radius, length, clearance, viscosity)
+        force[b, 0] += f_x
+        force[b, 1] += f_y
+        moment_world[b, 2] += torque
+        dissipated -= f_x * velocity[b, 0] + f_y * velocity[b, 1] + torque * speed
     lost, kept = add_sliced_raceways(packed, active, position, rotation, velocity, omega_world, force, moment_world,
                                      work.slice_loads, work.slice_friction, work.latched, work.latch_next)
     dissipated, stored = dissipated + lost, stored + kept

@@ -30,8 +30,9 @@ radial plane the planar model's (x, y).
   model's. Aligned, the two models are the same bearing, and a run reproduces the planar one
   (tests/test_spatial_bearing.py).
 
-Not yet in three dimensions (refused here with the field that asks for them): the land and pocket films, the
-constraint and full-complement cages, the gear train, load and speed profiles.
+Not yet in three dimensions (refused here with the field that asks for them): the pocket films, the constraint and
+full-complement cages, the gear train, load and speed profiles. The cage's land film is the planar short journal
+bearing on the cage's centre and spin (its tilt in the land is not in it).
 """
 
 from __future__ import annotations
@@ -51,6 +52,7 @@ from bearing_mbs.core.spatial import (
     BodyDrag,
     BodyForce,
     FlangeContact,
+    LandFilm,
     SlicedRaceway,
     SpatialBody,
     SpatialScene,
@@ -58,6 +60,8 @@ from bearing_mbs.core.spatial import (
     TranslationSpring,
 )
 from bearing_mbs.core.topology import Group
+from bearing_mbs.elements.drags import Drag
+from bearing_mbs.elements.journal_bearings import JournalFilm
 from bearing_mbs.models.cylindrical_roller.build import (
     CAGE,
     INNER_RING,
@@ -207,11 +211,16 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, cor
         AXIAL_STIFFNESS * bodies[body].mass)) for body in held)
     transverse = bodies[INNER_RING].inertia[0]
     shaft = AxisSpring(INNER_RING, axis, SHAFT_TILT_STIFFNESS, 2 * math.sqrt(SHAFT_TILT_STIFFNESS * transverse))
-    # the planar model's drags, on the same bodies (:data:`FIRST_ROLLER`); its films are refused (_check_supported)
-    drags = tuple(BodyDrag(drag.body, drag.linear, drag.quadratic, drag.angular, drag.angular_quadratic)
-                  for drag in lubricant_elements(spec, geometry, oil, caged=True))
+    # the planar model's drags and land film, on the same bodies (:data:`FIRST_ROLLER`); its pocket films are refused
+    # (_check_supported)
+    lubricant = lubricant_elements(spec, geometry, oil, caged=True)
+    drags = tuple(BodyDrag(item.body, item.linear, item.quadratic, item.angular, item.angular_quadratic)
+                  for item in lubricant if isinstance(item, Drag))
+    films = tuple(LandFilm(item.body, item.centre, item.radius, item.length, item.clearance, item.viscosity)
+                  for item in lubricant if isinstance(item, JournalFilm))
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
                          raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,), drags=drags,
+                         films=films,
                          gravity=(0.0, -spec.scenario.gravity, 0.0))
     contacts = tuple(LineContact(*raceway_line_contact(spec, geometry, group)[:2], geometry.roller_length / slices)
                      for group in (Group.INNER_RACE, Group.OUTER_RACE))
@@ -244,7 +253,6 @@ def _check_supported(spec) -> None:
                 ("drive.kind", spec.drive.kind, spec.drive.kind == "speed", "a speed drive only"),
                 ("drive.profile", spec.drive.profile, spec.drive.profile == "constant", "a constant speed only"),
                 ("load.profile", spec.load.profile, spec.load.profile == "constant", "a constant load only"),
-                ("lubricant.land_film", spec.lubricant.land_film, not spec.lubricant.land_film, "no land film"),
                 ("lubricant.pocket_film", spec.lubricant.pocket_film, not spec.lubricant.pocket_film,
                  "no pocket films"))
     for field, value, supported, allowed in refusals:
