@@ -211,13 +211,7 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, cor
         AXIAL_STIFFNESS * bodies[body].mass)) for body in held)
     transverse = bodies[INNER_RING].inertia[0]
     shaft = AxisSpring(INNER_RING, axis, SHAFT_TILT_STIFFNESS, 2 * math.sqrt(SHAFT_TILT_STIFFNESS * transverse))
-    # the planar model's drags and land film, on the same bodies (:data:`FIRST_ROLLER`); its pocket films are refused
-    # (_check_supported)
-    lubricant = lubricant_elements(spec, geometry, oil, caged=True)
-    drags = tuple(BodyDrag(item.body, item.linear, item.quadratic, item.angular, item.angular_quadratic)
-                  for item in lubricant if isinstance(item, Drag))
-    films = tuple(LandFilm(item.body, item.centre, item.radius, item.length, item.clearance, item.viscosity)
-                  for item in lubricant if isinstance(item, JournalFilm))
+    drags, films = _lubricant(spec, geometry, oil)
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
                          raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,), drags=drags,
                          films=films,
@@ -225,6 +219,17 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, cor
     contacts = tuple(LineContact(*raceway_line_contact(spec, geometry, group)[:2], geometry.roller_length / slices)
                      for group in (Group.INNER_RACE, Group.OUTER_RACE))
     return SpatialBearing(scene, geometry, geometry.epicyclic_cage_speed(speed), contacts)
+
+
+def _lubricant(spec, geometry: BearingGeometry, oil) -> tuple[tuple, tuple]:
+    """The planar model's drags and land film (:func:`.build.lubricant_elements`) as spatial elements, on the same
+    bodies (:data:`FIRST_ROLLER`); its pocket films are refused (:func:`_check_supported`)."""
+    lubricant = lubricant_elements(spec, geometry, oil, caged=True)
+    drags = tuple(BodyDrag(item.body, item.linear, item.quadratic, item.angular, item.angular_quadratic)
+                  for item in lubricant if isinstance(item, Drag))
+    films = tuple(LandFilm(item.body, item.centre, item.radius, item.length, item.clearance, item.viscosity)
+                  for item in lubricant if isinstance(item, JournalFilm))
+    return drags, films
 
 
 def _rib_approach(rib: FlangeContact, bodies: list) -> float:
