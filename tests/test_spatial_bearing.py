@@ -148,17 +148,18 @@ def test_aligned_the_bearing_is_the_planar_model():
 
 #: The scenario's lubricated variant as far as three dimensions model it (docs/spatial.md): EHL traction on the
 #: raceways (the planar ``ehl`` law per slice: Eyring film shear, shear heating, starved inlets, mixed friction,
-#: hydrodynamic rolling resistance), churning drags, the cage on its land film; a penalty cage without pocket films.
-LUBRICATED = ["cage.model=penalty", "lubricant.pocket_film=false"]
+#: hydrodynamic rolling resistance), churning drags, the cage on its land film, the pockets' films; the penalty cage.
+LUBRICATED = ["cage.model=penalty"]
 
 
 def test_aligned_and_lubricated_the_bearing_is_the_planar_model():
-    """At 5 kN from rolling start the churning and the land film slow the cage and the churning the rollers, and each
-    roller's traction, the planar ``ehl`` law on each slice at its load, slip and entrainment speed, drives it
-    against the hydrodynamic rolling resistance: the three-dimensional run reproduces the planar run's cage speed, roller spins and roller
-    loads within 0.5 % of their scales (the same physics, RK4 on the quaternion against RK4 on the angle); the spins
-    are also held to 1e-8, which 1.5 times the entrainment speed (1.4e-4) or the rolling resistance's couple of
-    the other sign fails."""
+    """At 5 kN from rolling start the churning, the land film and the pocket films slow the cage, the churning and
+    the pocket films the rollers, and each roller's traction, the planar ``ehl`` law on each slice at its load, slip
+    and entrainment speed, drives it against the hydrodynamic rolling resistance: the three-dimensional run
+    reproduces the planar run's cage speed, roller spins and roller loads within 0.5 % of their scales (measured
+    1.6e-14, 5.9e-12 and 1.3e-9: the same physics, RK4 on the quaternion against RK4 on the angle); the spins are
+    also held to 1e-8, which 1.5 times the entrainment speed, the rolling resistance's or the pocket film's couple
+    of the other sign fails."""
     solver = ["solver.engine=reference", "solver.reference.method=rk4", "solver.reference.step=2e-7",
               "solver.output_interval=1e-4"]
     bearing_spec = load_spec(SCENARIOS / "seed_hss_steady.toml", [*LUBRICATED, "load.radial=5000", *solver])
@@ -168,6 +169,7 @@ def test_aligned_and_lubricated_the_bearing_is_the_planar_model():
     bearing = build_spatial_bearing(bearing_spec, damping_time=0.0)
     assert bearing.scene.raceways[0].traction  # the inner raceway's slices carry the lubricated traction
     assert len(bearing.scene.films) == 1  # the cage's land film
+    assert len(bearing.scene.pocket_films) == 2 * bearing.geometry.rollers  # each pocket's two walls
     spatial = simulate_spatial_reference(bearing.scene, 2e-7, end, 1e-4)
     assert planar.success and spatial.success
     cage = planar.velocity[:, 3 * planar.body("cage") + 2]

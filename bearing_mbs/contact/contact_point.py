@@ -98,6 +98,18 @@ def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1
 
 
 @numba.njit(cache=True, inline="always")
+def apply_couple(b, g, c0, c1, c2, moment):
+    """Add the couple c [N m] (world frame) to roller b and its opposite to ring g (−1: the ground)."""
+    moment[b, 0] += c0
+    moment[b, 1] += c1
+    moment[b, 2] += c2
+    if g >= 0:
+        moment[g, 0] -= c0
+        moment[g, 1] -= c1
+        moment[g, 2] -= c2
+
+
+@numba.njit(cache=True, inline="always")
 def apply_force(b, g, l0, l1, l2, p0, p1, p2, f0, f1, f2, force, moment):
     """Add the force f [N] to roller b at arm l and its opposite to ring g (−1: the ground) at arm p, with their
     moments about the bodies' centres, all in the world frame."""

@@ -44,6 +44,7 @@ import numba
 from bearing_mbs.contact.contact_point import (
     NO_TRACTION,
     apply_contact,
+    apply_couple,
     apply_force,
     in_world,
     relative_velocity,
@@ -179,13 +180,7 @@ def add_sliced_raceways(packed, active, position, rotation, velocity, omega_worl
                     c0 = couple * (n1 * t2 - n2 * t1)
                     c1 = couple * (n2 * t0 - n0 * t2)
                     c2 = couple * (n0 * t1 - n1 * t0)
-                    moment[b, 0] += c0
-                    moment[b, 1] += c1
-                    moment[b, 2] += c2
-                    if g >= 0:
-                        moment[g, 0] -= c0
-                        moment[g, 1] -= c1
-                        moment[g, 2] -= c2
+                    apply_couple(b, g, c0, c1, c2, moment)
                     dissipated += resisting * rolling  # its power is −f u
             dissipated += (load - elastic) * rate + slice_friction[contact, k]
             if arm > 0.0:  # about the roller's axis, against its spin relative to the ring

@@ -28,6 +28,7 @@ from bearing_mbs.core.spatial_elements import (  # noqa: F401 (the elements are 
     BodyMoment,
     FlangeContact,
     LandFilm,
+    PocketFilm,
     SlicedRaceway,
     SpatialPacked,
     SpinServo,
@@ -74,8 +75,8 @@ class SpatialBody:
 class SpatialScene:
     """What gets simulated in three dimensions: the bodies, constant body-fixed moments and world-fixed forces,
     springs that hold a centre along a direction, sliced roller–raceway (and roller–pocket) contacts, roller
-    end–flange contacts, spin servos, springs that hold an axis, lubricant drags, land films, and gravity g [m/s²] in
-    the world frame."""
+    end–flange contacts, spin servos, springs that hold an axis, lubricant drags, land and pocket films, and gravity
+    g [m/s²] in the world frame."""
 
     name: str
     bodies: tuple[SpatialBody, ...]
@@ -88,6 +89,7 @@ class SpatialScene:
     axis_springs: tuple[AxisSpring, ...] = ()
     drags: tuple[BodyDrag, ...] = ()
     films: tuple[LandFilm, ...] = ()
+    pocket_films: tuple[PocketFilm, ...] = ()
     gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self):
@@ -103,7 +105,7 @@ class SpatialScene:
                 if not 0 <= item.body < count:
                     raise ValueError(f"{owner}: a {what} acts on body {item.body}, but the bodies are numbered 0 to "
                                      f"{count - 1}")
-        for contact in (*self.raceways, *self.flanges):
+        for contact in (*self.raceways, *self.flanges, *self.pocket_films):
             if not (0 <= contact.roller < count and -1 <= contact.ring < count and contact.ring != contact.roller):
                 raise ValueError(f"{owner}: contact {contact.name!r} joins bodies {contact.roller} and "
                                  f"{contact.ring}: two different bodies of 0 to {count - 1} (the ring may be -1, the "
@@ -113,7 +115,7 @@ class SpatialScene:
     def has_forces(self) -> bool:
         """It has force elements beyond gravity (the engines' force kernel runs only then)."""
         return bool(self.moments or self.forces or self.springs or self.raceways or self.flanges or self.servos
-                    or self.axis_springs or self.drags or self.films)
+                    or self.axis_springs or self.drags or self.films or self.pocket_films)
 
     def packed(self) -> SpatialPacked:
         """The force elements as the arrays that compiled code reads (:class:`SpatialPacked`)."""

@@ -288,6 +288,37 @@ class LandFilm:
                              f"got {self}")
 
 
+@dataclass(frozen=True)
+class PocketFilm:
+    """The oil film between roller ``roller`` and a flat wall of ring body ``ring``'s pocket (the planar model's
+    pocket film, :mod:`bearing_mbs.elements.spatial_pocket_film`): the wall through ``point`` with unit ``normal``
+    towards the roller (ring frame), the roller's radius [m] and its slices (centres ``positions`` [m] along its
+    axis, ``width`` [m]), the oil's viscosity [Pa s], the wall's half-width [m] and the film's smallest gap [m], all
+    > 0."""
+
+    name: str
+    roller: int
+    ring: int
+    point: tuple[float, float, float]
+    normal: tuple[float, float, float]
+    roller_radius: float
+    positions: tuple[float, ...]
+    width: float
+    viscosity: float
+    half_width: float
+    smallest_gap: float
+
+    def __post_init__(self):
+        owner = f"pocket film {self.name!r}"
+        object.__setattr__(self, "point", vector(owner, "point", self.point, 3))
+        object.__setattr__(self, "normal", unit_vector(owner, "normal", self.normal))
+        object.__setattr__(self, "positions", vector(owner, "positions", self.positions, len(self.positions)))
+        if not (self.positions and min(self.roller_radius, self.width, self.viscosity, self.half_width,
+                                       self.smallest_gap) > 0):
+            raise ValueError(f"{owner}: needs slices, and roller_radius, width, viscosity, half_width and "
+                             f"smallest_gap > 0, got {self}")
+
+
 def pack(scene) -> SpatialPacked:
     """The force elements of a :class:`~bearing_mbs.core.spatial.SpatialScene` as the arrays that compiled code reads."""
     bodies = scene.bodies
@@ -327,7 +358,20 @@ def pack(scene) -> SpatialPacked:
         column(scene.drags, lambda d: d.body, int),
         column(scene.drags, lambda d: (d.linear, d.quadratic, d.angular, d.angular_quadratic), shape=(4,)),
         column(scene.films, lambda f: f.body, int), column(scene.films, lambda f: f.centre, shape=(2,)),
-        column(scene.films, lambda f: (f.radius, f.length, f.clearance, f.viscosity), shape=(4,)))
+        column(scene.films, lambda f: (f.radius, f.length, f.clearance, f.viscosity), shape=(4,)),
+        *_pocket_film_columns(scene.pocket_films, column))
+
+
+def _pocket_film_columns(films, column) -> tuple:
+    """The pocket films' columns of :class:`SpatialPacked` (slices padded to the longest film's count)."""
+    slices = max((len(f.positions) for f in films), default=0)
+    positions = np.array([list(f.positions) + [0.0] * (slices - len(f.positions)) for f in films],
+                         dtype=float).reshape(len(films), slices)
+    return (column(films, lambda f: f.roller, int), column(films, lambda f: f.ring, int),
+            column(films, lambda f: f.point, shape=(3,)), column(films, lambda f: f.normal, shape=(3,)),
+            column(films, lambda f: f.roller_radius), column(films, lambda f: len(f.positions), int), positions,
+            column(films, lambda f: f.width),
+            column(films, lambda f: (f.viscosity, f.half_width, f.smallest_gap), shape=(3,)))
 
 
 def _flange_columns(flanges, column) -> tuple:
@@ -426,3 +470,12 @@ class SpatialPacked(NamedTuple):
     film_body: np.ndarray
     film_centre: np.ndarray
     film: np.ndarray
+    film_wall_roller: np.ndarray
+    film_wall_ring: np.ndarray
+    film_wall_point: np.ndarray
+    film_wall_normal: np.ndarray
+    film_wall_radius: np.ndarray
+    film_wall_slices: np.ndarray
+    film_wall_positions: np.ndarray
+    film_wall_width: np.ndarray
+    film_wall_law: np.ndarray

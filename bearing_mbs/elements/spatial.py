@@ -1,6 +1,7 @@
 """The force elements of a spatial scene, summed per body (compiled; both engines call it): world forces, body-fixed
 moments, springs that hold a centre along a direction or an axis, spin servos, drags, land films, sliced raceway and
-pocket contacts (:mod:`bearing_mbs.contact.sliced_raceway`) and flange contacts (:mod:`bearing_mbs.contact.flange`)."""
+pocket contacts (:mod:`bearing_mbs.contact.sliced_raceway`), flange contacts (:mod:`bearing_mbs.contact.flange`) and
+pocket films (:mod:`bearing_mbs.elements.spatial_pocket_film`)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from bearing_mbs.contact.flange import add_flanges
 from bearing_mbs.contact.sliced_raceway import add_sliced_raceways
 from bearing_mbs.core.rotations import rotation_from_vector
 from bearing_mbs.elements.journal_bearings import held_eccentricity
+from bearing_mbs.elements.spatial_pocket_film import add_pocket_films
 from bearing_mbs.fluid_film.closed_forms import short_bearing_force, short_bearing_torque
 
 
@@ -154,6 +156,7 @@ def spatial_forces(packed, position, velocity, omega_body, work):
     lost, kept = add_flanges(packed, active, position, rotation, velocity, omega_world, force, moment_world,
                              work.flange_loads)
     dissipated, stored = dissipated + lost, stored + kept
+    dissipated += add_pocket_films(packed, active, position, rotation, velocity, omega_world, force, moment_world)
     for i in range(bodies):  # the contacts' world moments in the body frame: Rᵀ M
         for j in range(3):
             work.moment[i, j] += (rotation[i, 0, j] * moment_world[i, 0] + rotation[i, 1, j] * moment_world[i, 1]

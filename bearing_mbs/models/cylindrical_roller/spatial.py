@@ -30,9 +30,9 @@ radial plane the planar model's (x, y).
   model's. Aligned, the two models are the same bearing, and a run reproduces the planar one
   (tests/test_spatial_bearing.py).
 
-Not yet in three dimensions (refused here with the field that asks for them): the pocket films, the constraint and
-full-complement cages, the gear train, load and speed profiles. The cage's land film is the planar short journal
-bearing on the cage's centre and spin (its tilt in the land is not in it).
+Not yet in three dimensions (refused here with the field that asks for them): the constraint and full-complement
+cages, the gear train, load and speed profiles. The cage's land film is the planar short journal bearing on the
+cage's centre and spin (its tilt in the land is not in it); the pockets' films are the planar law per slice.
 """
 
 from __future__ import annotations
@@ -53,6 +53,7 @@ from bearing_mbs.core.spatial import (
     BodyForce,
     FlangeContact,
     LandFilm,
+    PocketFilm,
     SlicedRaceway,
     SpatialBody,
     SpatialScene,
@@ -68,6 +69,7 @@ from bearing_mbs.models.cylindrical_roller.build import (
     first_roller,
     group_law,
     lubricant_elements,
+    pocket_film_law,
     raceway_line_contact,
 )
 from bearing_mbs.models.cylindrical_roller.drivetrain import initial_speed
@@ -212,9 +214,10 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, cor
     transverse = bodies[INNER_RING].inertia[0]
     shaft = AxisSpring(INNER_RING, axis, SHAFT_TILT_STIFFNESS, 2 * math.sqrt(SHAFT_TILT_STIFFNESS * transverse))
     drags, films = _lubricant(spec, geometry, oil)
+    pocket_films = _pocket_films(spec, geometry, oil, slices) if spec.lubricant.pocket_film else ()
     scene = SpatialScene(f"{spec.scenario.name} (3-D)", tuple(bodies), forces=forces, springs=springs,
                          raceways=raceways, flanges=flanges, servos=(servo,), axis_springs=(shaft,), drags=drags,
-                         films=films,
+                         films=films, pocket_films=pocket_films,
                          gravity=(0.0, -spec.scenario.gravity, 0.0))
     contacts = tuple(LineContact(*raceway_line_contact(spec, geometry, group)[:2], geometry.roller_length / slices)
                      for group in (Group.INNER_RACE, Group.OUTER_RACE))
@@ -223,13 +226,27 @@ def build_spatial_bearing(spec, slices: int = 10, damping_time: float = 0.0, cor
 
 def _lubricant(spec, geometry: BearingGeometry, oil) -> tuple[tuple, tuple]:
     """The planar model's drags and land film (:func:`.build.lubricant_elements`) as spatial elements, on the same
-    bodies (:data:`FIRST_ROLLER`); its pocket films are refused (:func:`_check_supported`)."""
+    bodies (:data:`FIRST_ROLLER`)."""
     lubricant = lubricant_elements(spec, geometry, oil, caged=True)
     drags = tuple(BodyDrag(item.body, item.linear, item.quadratic, item.angular, item.angular_quadratic)
                   for item in lubricant if isinstance(item, Drag))
     films = tuple(LandFilm(item.body, item.centre, item.radius, item.length, item.clearance, item.viscosity)
                   for item in lubricant if isinstance(item, JournalFilm))
     return drags, films
+
+
+def _pocket_films(spec, geometry: BearingGeometry, oil, slices: int) -> tuple:
+    """Each roller's films on its pocket's two flat walls (the planar model's pocket film pairs,
+    :func:`.build.pocket_film_law`: the wall as tall as the cage ring's section, the film floored at three
+    roughnesses), cut into the roller's straight slices."""
+    law = pocket_film_law(spec, geometry, oil)
+    length, viscosity, half_width, smallest_gap = law.film
+    common = {"roller_radius": geometry.roller_diameter / 2, "viscosity": viscosity, "half_width": half_width,
+              "smallest_gap": smallest_gap, **{key: value for key, value in _slices(length, slices, 0.0).items()
+                                               if key in ("positions", "width")}}
+    return tuple(PocketFilm(f"roller{k}-pocket_film_{label}", roller=FIRST_ROLLER + k, ring=CAGE,
+                            point=(*point, 0.0), normal=(*normal, 0.0), **common)
+                 for k in range(geometry.rollers) for label, (point, normal) in geometry.pocket_walls(k).items())
 
 
 def _rib_approach(rib: FlangeContact, bodies: list) -> float:
@@ -257,9 +274,7 @@ def _check_supported(spec) -> None:
     refusals = (("cage.model", spec.cage.model, spec.cage.model == "penalty", "the penalty cage only"),
                 ("drive.kind", spec.drive.kind, spec.drive.kind == "speed", "a speed drive only"),
                 ("drive.profile", spec.drive.profile, spec.drive.profile == "constant", "a constant speed only"),
-                ("load.profile", spec.load.profile, spec.load.profile == "constant", "a constant load only"),
-                ("lubricant.pocket_film", spec.lubricant.pocket_film, not spec.lubricant.pocket_film,
-                 "no pocket films"))
+                ("load.profile", spec.load.profile, spec.load.profile == "constant", "a constant load only"))
     for field, value, supported, allowed in refusals:
         if not supported:
             raise SpecError(field, value, f"the three-dimensional bearing models {allowed} so far (docs/spatial.md)")
