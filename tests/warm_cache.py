@@ -2,9 +2,7 @@
 
 Every scene made of the package's own force elements has the same compiled types, so a short run of the seed
 bearing compiles what all the tests' runs use: ``explicit`` the reference engine's driver for its explicit methods,
-``implicit`` the one for generalized-α, ``exudyn`` the force and Jacobian kernels Exudyn's compiled connector calls,
-``spatial`` the three-dimensional bearing's force kernel and the reference engine's RK4 and generalized-α for it (one
-scene type serves every spatial test) and the force function Exudyn's spatial scenes call.
+``implicit`` the one for generalized-α, ``exudyn`` the force and Jacobian kernels Exudyn's compiled connector calls.
 Without it, both test workers would compile the same driver at the same time, each for a minute or more.
 
 ``python tests/warm_cache.py explicit exudyn`` runs those warm-ups in this process; :func:`warm` runs groups of them
@@ -28,34 +26,17 @@ SOLVERS = {
     "exudyn": ["solver.engine=exudyn", "solver.exudyn.method=generalized_alpha", "solver.exudyn.connector=compiled",
                "solver.exudyn.jacobian=analytic"],
 }
-#: Process groups, all at once on two cores: the explicit driver and Exudyn's kernels (about 57 s), the implicit
-#: driver (60 s: docs/engines.md, "Compilation"), the spatial kernels (40 s); three processes share the cores, so
-#: the warm-up takes about half their sum, where each test worker would otherwise compile the spatial kernels itself.
-GROUPS = (("explicit", "exudyn"), ("implicit",), ("spatial",))
+#: Process groups of about equal compile time on two cores: the explicit driver and Exudyn's kernels, and the
+#: implicit driver (docs/engines.md, "Compilation").
+GROUPS = (("explicit", "exudyn"), ("implicit",))
 
 
 def run(name: str) -> None:
     from bearing_mbs.engines import simulate
     from bearing_mbs.models import build_scene, load_spec
 
-    if name == "spatial":
-        return run_spatial()
     spec = load_spec(SCENARIO, [*SOLVERS[name], *SHORT_RUN])
     simulate(build_scene(spec), spec.solver, 2e-4)
-
-
-def run_spatial() -> None:
-    """A few steps of the seed bearing in three dimensions on each spatial method of both engines."""
-    from bearing_mbs.engines.exudyn.spatial import simulate_spatial_exudyn
-    from bearing_mbs.engines.reference.spatial import simulate_spatial_reference
-    from bearing_mbs.models import load_spec
-    from bearing_mbs.models.cylindrical_roller.spatial import build_spatial_bearing
-    from bearing_mbs.spec import methods
-
-    scene = build_spatial_bearing(load_spec(SCENARIO, ["cage.model=penalty"]), slices=2).scene
-    for method in (methods.RK4, methods.GENERALIZED_ALPHA):
-        simulate_spatial_reference(scene, 1e-6, 2e-6, 1e-6, method=method)
-    simulate_spatial_exudyn(scene, 1e-6, 2e-6, 1e-6)
 
 
 def warm(groups=GROUPS, write=sys.stderr.write) -> None:
