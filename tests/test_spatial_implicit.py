@@ -62,6 +62,7 @@ def test_the_implicit_method_runs_the_bearing_as_rk4_does_and_closes_its_energy_
     assert scale(audit.error) < 1e-3 * moved
 
 
+@pytest.mark.slow
 def test_the_implicit_method_follows_the_loaded_rollers_attitudes_under_misalignment():
     geometry = BearingGeometry.from_spec(load_spec(SCENARIOS / "seed_hss_steady.toml").bearing)
     bearing = dry_bearing(crown=CircularCrown(radius=2.0, straight_length=geometry.roller_length / 2),
