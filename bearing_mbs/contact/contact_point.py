@@ -70,6 +70,32 @@ def relative_velocity(b, g, l0, l1, l2, position, velocity, omega_world):
 
 
 @numba.njit(cache=True, inline="always")
+def axis_point_velocity(b, z, e0, e1, e2, velocity, omega_world):
+    """The velocity [m/s] of roller b's point at z [m] along its axis e (world frame): v_b + ω_b × z e."""
+    w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
+    return (velocity[b, 0] + z * (w1 * e2 - w2 * e1), velocity[b, 1] + z * (w2 * e0 - w0 * e2),
+            velocity[b, 2] + z * (w0 * e1 - w1 * e0))
+
+
+@numba.njit(cache=True, inline="always")
+def entrainment(b, l0, l1, l2, u0, u1, u2, q0, q1, q2, n0, n1, n2, velocity, omega_world):
+    """The entrainment speed [m/s] at a contact point P (roller b's arm l, relative velocity u = v_b(P) − v_g(P)) that
+    moves at Ṗ = q, and its direction (a unit vector, zero at rest): the mean velocity of the two surfaces relative to
+    P, (v_b(P) + v_g(P))/2 − Ṗ, in the plane normal to n (the planar kinematics' rolling speed:
+    :func:`bearing_mbs.contact.kinematics.rolling_speed`)."""
+    w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
+    m0 = velocity[b, 0] + w1 * l2 - w2 * l1 - 0.5 * u0 - q0
+    m1 = velocity[b, 1] + w2 * l0 - w0 * l2 - 0.5 * u1 - q1
+    m2 = velocity[b, 2] + w0 * l1 - w1 * l0 - 0.5 * u2 - q2
+    normal = m0 * n0 + m1 * n1 + m2 * n2
+    m0, m1, m2 = m0 - normal * n0, m1 - normal * n1, m2 - normal * n2
+    speed = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
+    if speed == 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    return speed, m0 / speed, m1 / speed, m2 / speed
+
+
+@numba.njit(cache=True, inline="always")
 def apply_contact(b, g, l0, l1, l2, p0, p1, p2, n0, n1, n2, normal, load, u0, u1, u2, mu, regularisation, force,
                   moment, row, rolling):
     """Add to roller b, at arm l, the force ``normal`` · n [N] and the friction against the sliding velocity v_s (u

@@ -46,6 +46,8 @@ from bearing_mbs.contact.contact_point import (
     apply_contact,
     apply_couple,
     apply_force,
+    axis_point_velocity,
+    entrainment,
     in_world,
     relative_velocity,
     touches,
@@ -59,17 +61,12 @@ from bearing_mbs.contact.traction import inlet_shear_reaction, rolling_force
 @numba.njit(cache=True, inline="always")
 def entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, offset, distance, f0, f1, f2, a0, a1,
                       a2, position, velocity, omega_world):
-    """The entrainment speed [m/s] of a slice against a cylinder and its direction (a unit vector, zero at rest): the
-    mean velocity of the two surfaces relative to the moving contact point P = c − offset·n, in the tangent plane,
-    |(v_b(P) + v_g(P))/2 − Ṗ|_t (the planar kinematics' rolling speed:
-    :func:`bearing_mbs.contact.kinematics.rolling_speed`). c: the slice centre at z
-    along roller b's axis e; n: the unit normal from the cylinder's axis (through its foot point f, along a) at the
-    distance d; l: the roller's arm to P; u: v_b(P) − v_g(P). Ṗ = ċ − offset·ṅ, ṅ the normal's turn as c moves
-    about the axis (the axis' own tilting left out)."""
-    w0, w1, w2 = omega_world[b, 0], omega_world[b, 1], omega_world[b, 2]
-    c0 = velocity[b, 0] + z * (w1 * e2 - w2 * e1)  # ċ = v_b + ω_b × z e
-    c1 = velocity[b, 1] + z * (w2 * e0 - w0 * e2)
-    c2 = velocity[b, 2] + z * (w0 * e1 - w1 * e0)
+    """The entrainment speed [m/s] of a slice against a cylinder and its direction
+    (:func:`.contact_point.entrainment`), its contact point P = c − offset·n moving at Ṗ = ċ − offset·ṅ: c the slice
+    centre at z along roller b's axis e, n the unit normal from the cylinder's axis (through its foot point f, along a)
+    at the distance d, turning at ṅ as c moves about the axis (the axis' own tilting left out); l the roller's arm to
+    P, u = v_b(P) − v_g(P)."""
+    c0, c1, c2 = axis_point_velocity(b, z, e0, e1, e2, velocity, omega_world)
     r0, r1, r2 = c0, c1, c2  # ċ relative to the ring's material point on the axis at f
     if g >= 0:
         h0, h1, h2 = f0 - position[g, 0], f1 - position[g, 1], f2 - position[g, 2]
@@ -81,16 +78,8 @@ def entrainment_speed(b, g, z, e0, e1, e2, n0, n1, n2, l0, l1, l2, u0, u1, u2, o
     r0, r1, r2 = r0 - along * a0, r1 - along * a1, r2 - along * a2  # ḋ
     radial = r0 * n0 + r1 * n1 + r2 * n2
     scale = offset / distance  # Ṗ = ċ − offset·ṅ, ṅ = (ḋ − (ḋ·n) n)/d
-    p0, p1, p2 = c0 - scale * (r0 - radial * n0), c1 - scale * (r1 - radial * n1), c2 - scale * (r2 - radial * n2)
-    m0 = velocity[b, 0] + w1 * l2 - w2 * l1 - 0.5 * u0 - p0  # (v_b(P) + v_g(P))/2 − Ṗ
-    m1 = velocity[b, 1] + w2 * l0 - w0 * l2 - 0.5 * u1 - p1
-    m2 = velocity[b, 2] + w0 * l1 - w1 * l0 - 0.5 * u2 - p2
-    normal = m0 * n0 + m1 * n1 + m2 * n2
-    m0, m1, m2 = m0 - normal * n0, m1 - normal * n1, m2 - normal * n2
-    speed = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
-    if speed == 0.0:
-        return 0.0, 0.0, 0.0, 0.0
-    return speed, m0 / speed, m1 / speed, m2 / speed
+    return entrainment(b, l0, l1, l2, u0, u1, u2, c0 - scale * (r0 - radial * n0), c1 - scale * (r1 - radial * n1),
+                       c2 - scale * (r2 - radial * n2), n0, n1, n2, velocity, omega_world)
 
 
 @numba.njit(cache=True)
@@ -123,7 +112,7 @@ def add_sliced_raceways(packed, active, position, rotation, velocity, omega_worl
         mu, regularisation = packed.race_friction[contact], packed.race_regularisation_speed[contact]
         factor, floor = packed.race_damping_factor[contact], packed.race_approach_floor[contact]
         arm = packed.race_rolling_arm[contact]
-        lubricated = packed.race_lubricated[contact] and not plane
+        lubricated = packed.race_lubricated[contact]  # a cylinder's (SlicedRaceway refuses a plane's)
         d = 0.0
         # the raceway's axis in the world frame
         o0, o1, o2, a0, a1, a2 = in_world(g, position, rotation, packed.race_centre[contact],

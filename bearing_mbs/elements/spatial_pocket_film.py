@@ -20,7 +20,15 @@ import math
 
 import numba
 
-from bearing_mbs.contact.contact_point import apply_couple, apply_force, in_world, relative_velocity, touches
+from bearing_mbs.contact.contact_point import (
+    apply_couple,
+    apply_force,
+    axis_point_velocity,
+    entrainment,
+    in_world,
+    relative_velocity,
+    touches,
+)
 from bearing_mbs.contact.traction import inlet_shear_reaction
 from bearing_mbs.fluid_film.cylinder_plane import film_forces
 
@@ -55,25 +63,16 @@ def add_pocket_films(packed, active, position, rotation, velocity, omega_world, 
             rate = a0 * u0 + a1 * u1 + a2 * u2
             s0, s1, s2 = u0 - rate * a0, u1 - rate * a1, u2 - rate * a2  # sliding, in the wall's plane
             sliding = math.sqrt(s0 * s0 + s1 * s1 + s2 * s2)
-            # the entrainment: (v_b(P) + v_g(P))/2 − Ṗ, Ṗ = ċ − r ṅ, in the wall's plane
-            m0 = velocity[b, 0] + w1 * l2 - w2 * l1 - 0.5 * u0 - (velocity[b, 0] + z * (w1 * e2 - w2 * e1)
-                                                                 - radius * turn0)
-            m1 = velocity[b, 1] + w2 * l0 - w0 * l2 - 0.5 * u1 - (velocity[b, 1] + z * (w2 * e0 - w0 * e2)
-                                                                 - radius * turn1)
-            m2 = velocity[b, 2] + w0 * l1 - w1 * l0 - 0.5 * u2 - (velocity[b, 2] + z * (w0 * e1 - w1 * e0)
-                                                                 - radius * turn2)
-            normal = m0 * a0 + m1 * a1 + m2 * a2
-            m0, m1, m2 = m0 - normal * a0, m1 - normal * a1, m2 - normal * a2
-            entrainment = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
-            load, couette, poiseuille = film_forces(viscosity, entrainment, sliding, rate, radius, width, half_width,
-                                                    gap)
+            q0, q1, q2 = axis_point_velocity(b, z, e0, e1, e2, velocity, omega_world)  # ċ; P moves at ċ − r ṅ
+            speed, t0, t1, t2 = entrainment(b, l0, l1, l2, u0, u1, u2, q0 - radius * turn0, q1 - radius * turn1,
+                                            q2 - radius * turn2, a0, a1, a2, velocity, omega_world)
+            load, couette, poiseuille = film_forces(viscosity, speed, sliding, rate, radius, width, half_width, gap)
             tangential, couple = inlet_shear_reaction(poiseuille, 0.0, radius)
             f0, f1, f2 = load * a0, load * a1, load * a2
             if sliding > 0.0:
                 f0, f1, f2 = f0 + couette * s0 / sliding, f1 + couette * s1 / sliding, f2 + couette * s2 / sliding
             c0 = c1 = c2 = 0.0
-            if entrainment > 0.0:
-                t0, t1, t2 = m0 / entrainment, m1 / entrainment, m2 / entrainment
+            if speed > 0.0:
                 f0, f1, f2 = f0 + tangential * t0, f1 + tangential * t1, f2 + tangential * t2
                 c0, c1, c2 = couple * (a1 * t2 - a2 * t1), couple * (a2 * t0 - a0 * t2), couple * (a0 * t1 - a1 * t0)
             apply_force(b, g, l0, l1, l2, p0, p1, p2, f0, f1, f2, force, moment)
